@@ -1,0 +1,72 @@
+#pragma once
+// Bounding volume hierarchy over a scene's triangles, and the two queries the tracer needs:
+// the closest hit (camera rays) and any hit (shadow rays). Both give exactly the answers of the
+// brute-force loops in brute_force.h: the same triangle test, the same tie-breaking.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "bvh_wide.h"
+#include "ray.h"
+#include "scene.h"
+
+namespace raylab {
+
+// One node, 32 bytes. An inner node (count == 0) has its two children at nodes[index] and
+// nodes[index + 1]; a leaf (count > 0) holds triangles [index, index + count) of Bvh::triangles.
+struct BvhNode {
+    glm::vec3 lower{0.0f};
+    uint32_t index = 0;
+    glm::vec3 upper{0.0f};
+    uint32_t count = 0;
+    bool isLeaf() const { return count != 0; }
+};
+static_assert(sizeof(BvhNode) == 32);
+
+// A triangle as the BVH stores it: its vertices in leaf order, and which scene triangle it is.
+struct BvhTriangle {
+    glm::vec3 v0, v1, v2;
+    uint32_t sceneIndex;
+};
+
+struct Bvh {
+    std::vector<BvhNode> nodes;         // nodes[0] is the root; empty for a scene with no valid triangle
+    std::vector<BvhTriangle> triangles; // leaf order
+    std::size_t skippedTriangles = 0;   // invalid ones (non-finite or zero area), never hit
+
+    // The SIMD form (bvh_wide.h), built when the CPU runs AVX2 and BvhBuildOptions::simd is set.
+    // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.
+    std::vector<BvhWideNode> wideNodes;          // wideNodes[0] is the root
+    std::vector<BvhTriangleBlock> triangleBlocks; // leaf order
+
+    std::size_t memoryBytes() const;
+    int depth() const;
+};
+
+struct BvhBuildOptions {
+    int maxLeafSize = 4;     // triangles per leaf, at most
+    int binCount = 16;       // SAH bins per axis
+    int threads = 0;         // 0 = every hardware thread; the result does not depend on it
+    bool simd = true;        // also build the 8-wide form when the CPU has AVX2
+};
+
+// True when this CPU can run the AVX2 traversal.
+bool bvhSimdSupported();
+
+Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options = {});
+
+// The closest hit with ray.tMin < t < ray.tMax; Hit::triangle is the scene's triangle index.
+Hit closestHit(const Bvh& bvh, const Ray& ray);
+
+// True when any triangle is hit with ray.tMin < t < ray.tMax; stops at the first one found.
+bool anyHit(const Bvh& bvh, const Ray& ray);
+
+// The scalar reference: the binary nodes and intersectTriangle, whatever the Bvh holds. The
+// SIMD path gives exactly its answers (t, u, v, triangle) on every ray.
+Hit closestHitScalar(const Bvh& bvh, const Ray& ray);
+bool anyHitScalar(const Bvh& bvh, const Ray& ray);
+
+} // namespace raylab

@@ -1,0 +1,49 @@
+#pragma once
+// The pinhole camera: a position and an orientation (yaw about world y, then pitch about the
+// camera's right axis) and a vertical field of view. With yaw = pitch = 0 it looks along +z with
+// +y up; world space is right-handed, so the image's right is -x.
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "ray.h"
+
+namespace raylab {
+
+// The lab's camera: focal length f = image height in pixels, i.e. 2*atan(1/2) = 53.13 degrees.
+inline constexpr float kLabVerticalFovDegrees = 53.130102354155978f;
+
+struct Camera {
+    glm::vec3 position{0.0f, 0.0f, -3.0f};
+    float yawDegrees = 0.0f;   // positive turns the view to the left (counter-clockwise from above)
+    float pitchDegrees = 0.0f; // positive looks up; kept within (-90, 90)
+    float verticalFovDegrees = kLabVerticalFovDegrees; // in (0, 180)
+};
+
+// Columns: the camera's right, up and forward axes in world space (orthonormal).
+glm::mat3 worldFromCamera(const Camera& camera);
+
+// The unit vector the camera looks along.
+glm::vec3 forwardOf(const Camera& camera);
+
+// Yaw and pitch that make the camera at its position look at target (unchanged when they coincide).
+void lookAt(Camera& camera, const glm::vec3& target);
+
+// Focal length in pixels for an image of the given height, and its inverse.
+float focalLengthPixels(float verticalFovDegrees, int imageHeight);
+float verticalFovFromFocal(float focalPixels, int imageHeight);
+
+// Precomputed per-frame data to turn pixel coordinates into primary rays.
+struct PrimaryRays {
+    glm::vec3 origin{0.0f};
+    glm::vec3 right{0.0f}, up{0.0f}, forward{0.0f};
+    float halfWidth = 0.0f, halfHeight = 0.0f, focal = 1.0f;
+
+    PrimaryRays(const Camera& camera, int width, int height);
+
+    // The ray through image point (px, py) in pixel units, y counting down from the top; the
+    // pixel (x, y)'s centre is (x + 0.5, y + 0.5). The direction is unit length.
+    Ray through(float px, float py) const;
+};
+
+} // namespace raylab

@@ -1,0 +1,25 @@
+#pragma once
+// Turns linear radiance into 8-bit display values.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "framebuffer.h"
+#include "render_settings.h"
+
+namespace raylab {
+
+// One channel to 8 bits. Lab: round(clamp(value, 0, 1) * 255). sRGB: value * 2^exposure through
+// the sRGB transfer curve, then the same rounding. NaN maps to 0.
+uint8_t displayChannel(float value, DisplayMode mode, float exposure);
+
+// RGBA8, row-major from the top-left pixel, alpha 255. `scale` multiplies every pixel first
+// (1 / samples for an accumulation buffer of sums).
+void toRgba8(std::span<const glm::vec3> linear, float scale, DisplayMode mode, float exposure,
+             std::span<uint8_t> rgba);
+std::vector<uint8_t> toRgba8(const Framebuffer& image, DisplayMode mode, float exposure);
+
+} // namespace raylab

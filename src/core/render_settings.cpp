@@ -1,0 +1,92 @@
+#include "render_settings.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace raylab {
+
+namespace {
+
+bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool isFiniteNonNegative(const glm::vec3& v) {
+    return isFinite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;
+}
+
+std::string text(float value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+std::string text(const glm::vec3& v) { return text(v.x) + "," + text(v.y) + "," + text(v.z); }
+
+} // namespace
+
+std::string validate(const RenderSettings& s) {
+    const Camera& c = s.camera;
+    if (!isFinite(c.position)) {
+        return "camera position must be finite, got " + text(c.position);
+    }
+    if (!std::isfinite(c.yawDegrees)) {
+        return "camera yaw must be finite, got " + text(c.yawDegrees);
+    }
+    if (!(c.pitchDegrees > -90.0f && c.pitchDegrees < 90.0f)) {
+        return "camera pitch must be in (-90, 90) degrees, got " + text(c.pitchDegrees);
+    }
+    if (!(c.verticalFovDegrees > 0.0f && c.verticalFovDegrees < 180.0f)) {
+        return "field of view must be in (0, 180) degrees, got " + text(c.verticalFovDegrees);
+    }
+    if (!isFinite(s.light.position)) {
+        return "light position must be finite, got " + text(s.light.position);
+    }
+    if (!isFiniteNonNegative(s.light.color)) {
+        return "light colour must be finite and >= 0, got " + text(s.light.color);
+    }
+    if (!(std::isfinite(s.light.intensity) && s.light.intensity >= 0.0f)) {
+        return "light power must be finite and >= 0, got " + text(s.light.intensity);
+    }
+    if (!isFiniteNonNegative(s.indirectColor)) {
+        return "indirect colour must be finite and >= 0, got " + text(s.indirectColor);
+    }
+    if (!(std::isfinite(s.indirectIntensity) && s.indirectIntensity >= 0.0f)) {
+        return "indirect light must be finite and >= 0, got " + text(s.indirectIntensity);
+    }
+    if (!(std::isfinite(s.shadowEpsilon) && s.shadowEpsilon >= 0.0f)) {
+        return "shadow epsilon must be finite and >= 0, got " + text(s.shadowEpsilon);
+    }
+    if (s.width < 1 || s.width > kMaxImageSide || s.height < 1 || s.height > kMaxImageSide) {
+        return "image size must be 1.." + std::to_string(kMaxImageSide) + " on each side, got " +
+               std::to_string(s.width) + "x" + std::to_string(s.height);
+    }
+    if (s.samplesPerPixel < 1 || s.samplesPerPixel > kMaxSamplesPerPixel) {
+        return "samples per pixel must be 1.." + std::to_string(kMaxSamplesPerPixel) + ", got " +
+               std::to_string(s.samplesPerPixel);
+    }
+    if (s.threads < 0 || s.threads > kMaxThreads) {
+        return "threads must be 0 (all) .. " + std::to_string(kMaxThreads) + ", got " +
+               std::to_string(s.threads);
+    }
+    if (!(std::isfinite(s.exposure) && std::abs(s.exposure) <= 64.0f)) {
+        return "exposure must be finite within [-64, 64] stops, got " + text(s.exposure);
+    }
+    return {};
+}
+
+const char* toString(DisplayMode mode) { return mode == DisplayMode::Lab ? "lab" : "srgb"; }
+
+bool parseDisplayMode(const std::string& text, DisplayMode& mode) {
+    if (text == "lab") {
+        mode = DisplayMode::Lab;
+        return true;
+    }
+    if (text == "srgb") {
+        mode = DisplayMode::Srgb;
+        return true;
+    }
+    return false;
+}
+
+} // namespace raylab

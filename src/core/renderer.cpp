@@ -1,0 +1,69 @@
+#include "renderer.h"
+
+#include "camera.h"
+#include "parallel_tiles.h"
+#include "sampling.h"
+
+namespace raylab {
+
+bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                    uint32_t sampleIndex, std::span<glm::vec3> sums, RayCounts* counts,
+                    const PassOptions& options) {
+    const int width = settings.width;
+    const PrimaryRays rays(settings.camera, width, settings.height);
+    std::atomic<uint64_t> primary{0};
+    std::atomic<uint64_t> shadow{0};
+
+    TileLoopOptions loop;
+    loop.threads = settings.threads;
+    loop.cancel = options.cancel;
+    if (options.progress) {
+        loop.progress = [&](std::size_t done, std::size_t total) {
+            options.progress(static_cast<double>(done) / static_cast<double>(total));
+        };
+    }
+    const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
+        RayCounts tileCounts;
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const PixelOffset offset = samplePixelOffset(static_cast<uint32_t>(x),
+                                                             static_cast<uint32_t>(y), sampleIndex);
+                const Ray ray = rays.through(static_cast<float>(x) + offset.dx,
+                                             static_cast<float>(y) + offset.dy);
+                sums[static_cast<std::size_t>(y) * width + x] +=
+                    shadeLab(scene, bvh, settings, ray, tileCounts);
+            }
+        }
+        primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);
+        shadow.fetch_add(tileCounts.shadow, std::memory_order_relaxed);
+    });
+    if (counts) {
+        counts->primary += primary.load();
+        counts->shadow += shadow.load();
+    }
+    return complete;
+}
+
+Framebuffer render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   RayCounts* counts, const PassOptions& options) {
+    Framebuffer image(settings.width, settings.height);
+    const int samples = settings.samplesPerPixel;
+    for (int s = 0; s < samples; ++s) {
+        PassOptions pass = options;
+        if (options.progress) {
+            pass.progress = [&](double fraction) { options.progress((s + fraction) / samples); };
+        }
+        if (!accumulatePass(scene, bvh, settings, static_cast<uint32_t>(s), image.pixels, counts,
+                            pass)) {
+            break;
+        }
+    }
+    // The same operation the viewer applies to its sums (sum * (1 / n)), so both give equal bytes.
+    const float scale = 1.0f / static_cast<float>(samples);
+    for (glm::vec3& p : image.pixels) {
+        p *= scale;
+    }
+    return image;
+}
+
+} // namespace raylab

@@ -1,0 +1,37 @@
+#pragma once
+// The progressive renderer: each pass adds one sample per pixel into a buffer of sums; the image
+// is the sums divided by the number of passes. Tiles are spread over threads; every pixel's
+// samples are summed in order on one thread, so the bytes never depend on the thread count.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <span>
+
+#include <glm/vec3.hpp>
+
+#include "bvh.h"
+#include "framebuffer.h"
+#include "lab_shading.h"
+#include "render_settings.h"
+#include "scene.h"
+
+namespace raylab {
+
+struct PassOptions {
+    const std::atomic<bool>* cancel = nullptr; // checked between tiles
+    // Called on the calling thread with the fraction of the pass done, in [0, 1].
+    std::function<void(double fraction)> progress;
+};
+
+// Adds sample `sampleIndex` (0 = the pixel centre) of every pixel to sums (width * height,
+// row-major from the top). Returns false, leaving sums partly updated, when cancelled.
+bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                    uint32_t sampleIndex, std::span<glm::vec3> sums, RayCounts* counts = nullptr,
+                    const PassOptions& options = {});
+
+// A whole render of settings.samplesPerPixel samples, averaged. Settings must pass validate().
+Framebuffer render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   RayCounts* counts = nullptr, const PassOptions& options = {});
+
+} // namespace raylab

@@ -1,0 +1,67 @@
+#pragma once
+// The options raylab-render, raylab (the viewer) and raylab-bench share, parsed into one struct.
+// Flags override --settings FILE.json, which overrides the defaults (the lab's, or for a mesh the
+// framing of core/scene_framing.h).
+
+#include <optional>
+#include <string>
+
+#include "core/render_settings.h"
+#include "core/scene.h"
+
+namespace raylab {
+
+enum class Program { Render, Viewer, Bench };
+
+// Which settings the user gave, by flag or in the --settings file. A mesh scene is framed
+// (frameScene) except for these.
+struct GivenSettings {
+    bool cameraPosition = false;
+    bool cameraYaw = false;
+    bool cameraPitch = false;
+    bool cameraFov = false; // --fov or --focal
+    bool lightPosition = false;
+    bool lightColor = false;
+    bool lightIntensity = false;
+    bool shadowEpsilon = false;
+};
+
+struct CommandLine {
+    std::string scene = "cornell";
+    RenderSettings settings;
+    // Which parts were given (by flag or settings file); a mesh scene frames the rest.
+    bool cameraGiven = false;        // position, yaw or pitch
+    bool lightGiven = false;         // the light's position
+    bool shadowEpsilonGiven = false;
+    GivenSettings given;             // the same, field by field
+    std::optional<glm::vec3> lookAt; // --look-at, applied after the scene is known
+
+    bool help = false;
+    std::string output;        // render: -o FILE
+    std::string saveSettings;  // --save-settings FILE.json
+    // viewer
+    int frames = 0;            // --frames N: quit after N shown frames (0 = run until closed)
+    std::string screenshot;    // --screenshot FILE: save the last shown frame
+    std::string screenshotDir = "."; // --screenshot-dir DIR
+    // bench
+    bool json = false;         // --json
+    int benchFrames = 5;       // --frames N for the bench: best of N
+};
+
+// Returns 0 on success; 2 with a one-line `error` for usage errors (unknown flag, missing or
+// malformed or out-of-range value); 1 when --settings names a file that cannot be read or parsed.
+// `error` does not start with the program's name; callers print "<program>: <error>".
+// With --help anywhere (before "--"), returns 0 with help set and nothing else parsed.
+// When the --settings file has a "scene" and no SCENE is given, that scene is used.
+int parseCommandLine(int argc, const char* const* argv, Program program, CommandLine& out,
+                     std::string& error);
+
+std::string usage(Program program);
+
+// Once the scene is loaded: a mesh scene (anything but the built-in "cornell") gets core
+// frameScene's camera, light and epsilon except for what the user gave; then --look-at turns the
+// camera. Returns an empty string, or one line when the result fails validate() (e.g. a look-at
+// point straight above the camera).
+std::string finishSettings(const Scene& scene, CommandLine& commandLine);
+
+} // namespace raylab

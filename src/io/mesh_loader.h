@@ -1,0 +1,32 @@
+#pragma once
+// Turns mesh files (OBJ with MTL, PLY, glTF/GLB and whatever else Assimp reads) into a core Scene.
+
+#include <cstddef>
+#include <string>
+
+#include "core/scene.h"
+
+namespace raylab {
+
+// What the loader skipped or had to guess; each count is reported as one warning line.
+struct MeshLoadReport {
+    std::size_t nonFiniteTriangles = 0; // a NaN or infinite vertex coordinate
+    std::size_t degenerateTriangles = 0; // zero area
+    std::size_t badIndexFaces = 0;      // an index out of range
+    std::size_t nonTriangleFaces = 0;   // points and lines, which have no surface
+    bool missingMaterialLibrary = false; // e.g. an OBJ whose MTL file is missing
+};
+
+// Loads `path` into scene. Diffuse colour comes from the material (Kd / base colour), 0.75 grey
+// where there is none. Returns false with a one-line error (naming the file) when the file is
+// missing, unreadable, not a mesh, or has no valid triangle.
+bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std::string& error);
+
+// "cornell" is the built-in lab box; anything else is a mesh path.
+bool loadScene(const std::string& nameOrPath, Scene& scene, MeshLoadReport& report,
+               std::string& error);
+
+// The report's warnings as lines ("bunny.ply: skipped 3 degenerate triangles"); empty when clean.
+std::string describe(const MeshLoadReport& report, const std::string& path);
+
+} // namespace raylab

@@ -1,0 +1,50 @@
+#pragma once
+// RenderSettings as JSON. Every field is optional when reading: missing ones keep the value they
+// had. Unknown keys, wrong types and invalid values are errors.
+//
+// The format (units: world units, degrees, watts, stops):
+//   {"camera":   {"position": [0, 0, -3], "yaw": 0, "pitch": 0, "fov": 53.130104},
+//    "light":    {"position": [0, 0.5, -0.7], "color": [1, 1, 1], "intensity": 14},
+//    "indirect": {"enabled": true, "color": [1, 1, 1], "intensity": 0.5},
+//    "shadows":  {"enabled": true, "epsilon": 0.001},
+//    "image":    {"width": 500, "height": 500, "samples": 1},
+//    "threads":  0,
+//    "display":  {"mode": "lab", "exposure": 0},
+//    "scene":    "cornell"}                       <- optional; only written when asked for
+// Floats are written in the shortest form that reads back to the same float, so a save and a load
+// reproduce the settings bit for bit.
+
+#include <set>
+#include <string>
+
+#include "core/render_settings.h"
+
+namespace raylab {
+
+std::string settingsToJson(const RenderSettings& settings);
+// The same plus a top-level "scene" (the built-in scene's name or the mesh path), for screenshots
+// and --save-settings.
+std::string settingsToJson(const RenderSettings& settings, const std::string& scene);
+
+// What a JSON text held besides the values.
+struct SettingsJsonExtras {
+    std::set<std::string> keys; // the leaf keys it gave, e.g. "camera.position", "threads"
+    std::string scene;          // its "scene", or empty
+};
+
+// Reads JSON text over settings. Returns false with a one-line error naming the key, leaving
+// settings unchanged. Each value is checked with core validate() as it is applied.
+bool settingsFromJson(const std::string& text, RenderSettings& settings, std::string& error);
+bool settingsFromJson(const std::string& text, RenderSettings& settings, SettingsJsonExtras& extras,
+                      std::string& error);
+
+// Errors start with the path ("view.json: camera.fov: must be a number, got \"wide\"").
+bool loadSettingsFile(const std::string& path, RenderSettings& settings, std::string& error);
+bool loadSettingsFile(const std::string& path, RenderSettings& settings, SettingsJsonExtras& extras,
+                      std::string& error);
+// Atomic (temporary file and rename). An empty scene writes no "scene" key.
+bool saveSettingsFile(const std::string& path, const RenderSettings& settings, std::string& error);
+bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
+                      const std::string& scene, std::string& error);
+
+} // namespace raylab

@@ -1,0 +1,89 @@
+// The pinhole camera: axes, pixel-centre rays, field of view and look-at.
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "core/camera.h"
+
+namespace raylab {
+namespace {
+
+void expectVecNear(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-6f) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+TEST(Camera, LabDefaultLooksAlongPlusZWithRightAlongMinusX) {
+    const Camera lab;
+    EXPECT_EQ(lab.position, glm::vec3(0.0f, 0.0f, -3.0f));
+    const glm::mat3 basis = worldFromCamera(lab);
+    expectVecNear(basis[0], {-1.0f, 0.0f, 0.0f});
+    expectVecNear(basis[1], {0.0f, 1.0f, 0.0f});
+    expectVecNear(basis[2], {0.0f, 0.0f, 1.0f});
+}
+
+TEST(Camera, LabFieldOfViewMeansFocalLengthEqualsImageHeight) {
+    EXPECT_NEAR(focalLengthPixels(kLabVerticalFovDegrees, 500), 500.0f, 1e-3f);
+    EXPECT_NEAR(verticalFovFromFocal(500.0f, 500), kLabVerticalFovDegrees, 1e-4f);
+    EXPECT_NEAR(focalLengthPixels(90.0f, 200), 100.0f, 1e-3f);
+    for (float fov : {1.0f, 30.0f, 90.0f, 170.0f}) {
+        EXPECT_NEAR(verticalFovFromFocal(focalLengthPixels(fov, 720), 720), fov, 1e-3f);
+    }
+}
+
+TEST(Camera, PixelCentreRaysFollowTheLabFormula) {
+    const Camera lab;
+    const int w = 500, h = 500;
+    const PrimaryRays rays(lab, w, h);
+    // d = normalize(right (x + 0.5 - W/2) + up (H/2 - y - 0.5) + forward f), f = H.
+    for (const auto& [x, y] : {std::pair{0, 0}, {499, 0}, {0, 499}, {250, 250}, {123, 321}}) {
+        const Ray ray = rays.through(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+        const glm::vec3 expected = glm::normalize(
+            glm::vec3(-(static_cast<float>(x) + 0.5f - 250.0f),
+                      250.0f - static_cast<float>(y) - 0.5f, 500.0f));
+        expectVecNear(ray.direction, expected);
+        EXPECT_EQ(ray.origin, lab.position);
+    }
+    // The top-left pixel looks up and to the image's left, which is +x in world space.
+    const Ray topLeft = rays.through(0.5f, 0.5f);
+    EXPECT_GT(topLeft.direction.x, 0.0f);
+    EXPECT_GT(topLeft.direction.y, 0.0f);
+}
+
+TEST(Camera, YawTurnsLeftAndPitchLooksUp) {
+    Camera camera;
+    camera.yawDegrees = 90.0f;
+    expectVecNear(forwardOf(camera), {1.0f, 0.0f, 0.0f});
+    expectVecNear(worldFromCamera(camera)[0], {0.0f, 0.0f, 1.0f});
+    camera.yawDegrees = 0.0f;
+    camera.pitchDegrees = 30.0f;
+    expectVecNear(forwardOf(camera), {0.0f, 0.5f, std::sqrt(3.0f) / 2.0f});
+    const glm::mat3 basis = worldFromCamera(camera);
+    EXPECT_NEAR(glm::dot(basis[0], basis[1]), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::dot(basis[1], basis[2]), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(basis[1]), 1.0f, 1e-6f);
+    EXPECT_GT(basis[1].y, 0.0f);
+}
+
+TEST(Camera, LookAtPointsTheForwardAxisAtTheTarget) {
+    Camera camera;
+    camera.position = {1.0f, 2.0f, 3.0f};
+    const glm::vec3 target{-2.0f, 0.5f, 7.0f};
+    lookAt(camera, target);
+    expectVecNear(forwardOf(camera), glm::normalize(target - camera.position), 1e-5f);
+    // Straight down is clamped short of the pole, where yaw would be undefined.
+    lookAt(camera, camera.position - glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_GT(camera.pitchDegrees, -90.0f);
+    EXPECT_LT(camera.pitchDegrees, -89.0f);
+    // The target at the camera changes nothing.
+    const Camera before = camera;
+    lookAt(camera, camera.position);
+    EXPECT_EQ(camera.yawDegrees, before.yawDegrees);
+    EXPECT_EQ(camera.pitchDegrees, before.pitchDegrees);
+}
+
+} // namespace
+} // namespace raylab

@@ -1,0 +1,130 @@
+// The renderer: determinism across thread counts, progressive accumulation, cancellation.
+
+#include <atomic>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "core/bvh.h"
+#include "core/cornell_box.h"
+#include "core/renderer.h"
+#include "core/sampling.h"
+
+namespace raylab {
+namespace {
+
+bool sameBits(const Framebuffer& a, const Framebuffer& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+TEST(Renderer, SameBitsWhateverTheThreadCount) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 161; // not a multiple of the tile size
+    s.height = 97;
+    s.samplesPerPixel = 3;
+    s.threads = 1;
+    const Framebuffer reference = render(scene, bvh, s);
+    for (int threads : {2, 3, 8}) {
+        s.threads = threads;
+        EXPECT_TRUE(sameBits(render(scene, bvh, s), reference)) << threads << " threads";
+    }
+}
+
+TEST(Renderer, CountsOnePrimaryRayPerPixelPerSample) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 40;
+    s.height = 30;
+    s.samplesPerPixel = 2;
+    RayCounts counts;
+    render(scene, bvh, s, &counts);
+    EXPECT_EQ(counts.primary, 2u * 40u * 30u);
+    EXPECT_GT(counts.shadow, 0u);
+    EXPECT_LE(counts.shadow, counts.primary);
+}
+
+TEST(Renderer, OneSampleIsTheLabsCentredRayAndMoreSamplesAverageJitteredOnes) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 64;
+    s.height = 64;
+    const Framebuffer one = render(scene, bvh, s);
+    const PrimaryRays rays(s.camera, s.width, s.height);
+    RayCounts counts;
+    EXPECT_EQ(one.at(10, 20), shadeLab(scene, bvh, s, rays.through(10.5f, 20.5f), counts));
+
+    // N samples = the sums of passes 0..N-1 times 1/N, which is what the viewer shows.
+    s.samplesPerPixel = 4;
+    const Framebuffer four = render(scene, bvh, s);
+    std::vector<glm::vec3> sums(64 * 64, glm::vec3(0.0f));
+    for (uint32_t pass = 0; pass < 4; ++pass) {
+        ASSERT_TRUE(accumulatePass(scene, bvh, s, pass, sums));
+    }
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        ASSERT_EQ(four.pixels[i], sums[i] * 0.25f);
+    }
+    EXPECT_FALSE(sameBits(one, four)) << "jittered samples must smooth the edges";
+}
+
+TEST(Renderer, SampleOffsetsAreCentredFirstThenDistinctInsideThePixel) {
+    const PixelOffset centre = samplePixelOffset(3, 4, 0);
+    EXPECT_EQ(centre.dx, 0.5f);
+    EXPECT_EQ(centre.dy, 0.5f);
+    int repeats = 0;
+    PixelOffset previous = centre;
+    for (uint32_t i = 1; i < 1000; ++i) {
+        const PixelOffset o = samplePixelOffset(17, 9, i);
+        ASSERT_GE(o.dx, 0.0f);
+        ASSERT_LT(o.dx, 1.0f);
+        ASSERT_GE(o.dy, 0.0f);
+        ASSERT_LT(o.dy, 1.0f);
+        repeats += (o.dx == previous.dx && o.dy == previous.dy) ? 1 : 0;
+        previous = o;
+    }
+    EXPECT_EQ(repeats, 0);
+    // Neighbouring pixels do not share a pattern.
+    EXPECT_NE(samplePixelOffset(17, 9, 1).dx, samplePixelOffset(18, 9, 1).dx);
+}
+
+TEST(Renderer, ACancelledPassStopsAndSaysSo) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    std::vector<glm::vec3> sums(500 * 500, glm::vec3(0.0f));
+    std::atomic<bool> cancel{true};
+    PassOptions options;
+    options.cancel = &cancel;
+    EXPECT_FALSE(accumulatePass(scene, bvh, s, 0, sums, nullptr, options));
+    for (const glm::vec3& p : sums) {
+        ASSERT_EQ(p, glm::vec3(0.0f));
+    }
+}
+
+TEST(Renderer, ProgressRisesToOne) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 100;
+    s.height = 100;
+    s.samplesPerPixel = 2;
+    s.threads = 1;
+    double last = 0.0;
+    int calls = 0;
+    PassOptions options;
+    options.progress = [&](double f) {
+        EXPECT_GE(f, last);
+        last = f;
+        ++calls;
+    };
+    render(scene, bvh, s, nullptr, options);
+    EXPECT_GT(calls, 2);
+    EXPECT_DOUBLE_EQ(last, 1.0);
+}
+
+} // namespace
+} // namespace raylab
