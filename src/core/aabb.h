@@ -1,12 +1,11 @@
 #pragma once
 // Axis-aligned bounding box.
 
-#include <algorithm>
+#include "ray.h"
 
+#include <algorithm>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
-
-#include "ray.h"
 
 namespace raylab {
 

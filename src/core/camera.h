@@ -3,10 +3,10 @@
 // camera's right axis) and a vertical field of view. With yaw = pitch = 0 it looks along +z with
 // +y up; world space is right-handed, so the image's right is -x.
 
+#include "ray.h"
+
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
-
-#include "ray.h"
 
 namespace raylab {
 

@@ -37,8 +37,16 @@ Corners scaledCorners(const std::array<glm::vec3, 8>& lab) {
 // The lab's ten triangles of a block (front, front, back, left, top; two each).
 void addBlock(Scene& scene, const Corners& k, uint32_t material) {
     const std::array<std::array<glm::vec3, 3>, 10> faces{{
-        {k.e, k.b, k.a}, {k.e, k.f, k.b}, {k.f, k.d, k.b}, {k.f, k.h, k.d}, {k.h, k.c, k.d},
-        {k.h, k.g, k.c}, {k.g, k.e, k.c}, {k.e, k.a, k.c}, {k.g, k.f, k.e}, {k.g, k.h, k.f},
+        {k.e, k.b, k.a},
+        {k.e, k.f, k.b},
+        {k.f, k.d, k.b},
+        {k.f, k.h, k.d},
+        {k.h, k.c, k.d},
+        {k.h, k.g, k.c},
+        {k.g, k.e, k.c},
+        {k.e, k.a, k.c},
+        {k.g, k.f, k.e},
+        {k.g, k.h, k.f},
     }};
     for (const auto& f : faces) {
         scene.triangles.push_back({f[0], f[1], f[2], material});
@@ -64,8 +72,14 @@ Scene makeCornellBox() {
     }
     auto id = [](LabColor c) { return static_cast<uint32_t>(c); };
 
-    const Corners room = scaledCorners({{{kL, 0, 0}, {0, 0, 0}, {kL, 0, kL}, {0, 0, kL},
-                                        {kL, kL, 0}, {0, kL, 0}, {kL, kL, kL}, {0, kL, kL}}});
+    const Corners room = scaledCorners({{{kL, 0, 0},
+                                         {0, 0, 0},
+                                         {kL, 0, kL},
+                                         {0, 0, kL},
+                                         {kL, kL, 0},
+                                         {0, kL, 0},
+                                         {kL, kL, kL},
+                                         {0, kL, kL}}});
     const auto add = [&](glm::vec3 p, glm::vec3 q, glm::vec3 r, LabColor c) {
         scene.triangles.push_back({p, q, r, id(c)});
     };
@@ -81,12 +95,24 @@ Scene makeCornellBox() {
     add(room.g, room.h, room.d, LabColor::White);
 
     addBlock(scene,
-             scaledCorners({{{290, 0, 114}, {130, 0, 65}, {240, 0, 272}, {82, 0, 225},
-                             {290, 165, 114}, {130, 165, 65}, {240, 165, 272}, {82, 165, 225}}}),
+             scaledCorners({{{290, 0, 114},
+                             {130, 0, 65},
+                             {240, 0, 272},
+                             {82, 0, 225},
+                             {290, 165, 114},
+                             {130, 165, 65},
+                             {240, 165, 272},
+                             {82, 165, 225}}}),
              id(LabColor::Red)); // short block
     addBlock(scene,
-             scaledCorners({{{423, 0, 247}, {265, 0, 296}, {472, 0, 406}, {314, 0, 456},
-                             {423, 330, 247}, {265, 330, 296}, {472, 330, 406}, {314, 330, 456}}}),
+             scaledCorners({{{423, 0, 247},
+                             {265, 0, 296},
+                             {472, 0, 406},
+                             {314, 0, 456},
+                             {423, 330, 247},
+                             {265, 330, 296},
+                             {472, 330, 406},
+                             {314, 330, 456}}}),
              id(LabColor::Blue)); // tall block
     return scene;
 }

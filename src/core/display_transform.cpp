@@ -19,8 +19,7 @@ uint8_t quantize(float unit) {
 }
 
 float srgbEncode(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear
-                                : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
 } // namespace

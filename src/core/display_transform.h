@@ -1,14 +1,13 @@
 #pragma once
 // Turns linear radiance into 8-bit display values.
 
-#include <cstdint>
-#include <span>
-#include <vector>
-
-#include <glm/vec3.hpp>
-
 #include "framebuffer.h"
 #include "render_settings.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
 
 namespace raylab {
 

@@ -1,7 +1,6 @@
 #include "lab_shading.h"
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace raylab {

@@ -5,13 +5,12 @@
 // incoming ray, rho the triangle's diffuse colour, N the constant indirect term. The point is in
 // shadow when a triangle lies on the segment towards the light with eps < t < |r| - eps.
 
-#include <cstdint>
-
-#include <glm/vec3.hpp>
-
 #include "bvh.h"
 #include "render_settings.h"
 #include "scene.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
 
 namespace raylab {
 

@@ -17,7 +17,7 @@ int resolveThreadCount(int requested);
 
 struct TileLoopOptions {
     int tileSize = 32;
-    int threads = 0;                          // as resolveThreadCount
+    int threads = 0;                           // as resolveThreadCount
     const std::atomic<bool>* cancel = nullptr; // checked before each tile
     // Called on the calling thread only, after each tile it finished, with the tiles done so far.
     std::function<void(std::size_t done, std::size_t total)> progress;

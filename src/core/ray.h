@@ -2,9 +2,8 @@
 // Rays and hit records shared by every intersection routine.
 
 #include <cstdint>
-#include <limits>
-
 #include <glm/vec3.hpp>
+#include <limits>
 
 namespace raylab {
 

@@ -2,11 +2,10 @@
 // Everything that decides a picture besides the scene: one plain struct with the lab's defaults.
 // The viewer's panel, raylab-render's flags and the settings JSON all edit this struct.
 
-#include <string>
+#include "camera.h"
 
 #include <glm/vec3.hpp>
-
-#include "camera.h"
+#include <string>
 
 namespace raylab {
 
@@ -37,15 +36,17 @@ struct RenderSettings {
     bool shadows = true;
     float shadowEpsilon = 1e-3f;
 
-    int width = 500;          // pixels, 1..kMaxImageSide
-    int height = 500;         // pixels, 1..kMaxImageSide
-    int samplesPerPixel = 1;  // 1 = the lab's single centred ray; more = jittered and averaged
-    int threads = 0;          // 0 = every hardware thread
+    int width = 500;         // pixels, 1..kMaxImageSide
+    int height = 500;        // pixels, 1..kMaxImageSide
+    int samplesPerPixel = 1; // 1 = the lab's single centred ray; more = jittered and averaged
+    int threads = 0;         // 0 = every hardware thread
 
     DisplayMode display = DisplayMode::Lab;
-    float exposure = 0.0f;    // stops, for DisplayMode::Srgb
+    float exposure = 0.0f; // stops, for DisplayMode::Srgb
 
-    glm::vec3 indirect3() const { return indirect ? indirectColor * indirectIntensity : glm::vec3(0.0f); }
+    glm::vec3 indirect3() const {
+        return indirect ? indirectColor * indirectIntensity : glm::vec3(0.0f);
+    }
 };
 
 inline constexpr int kMaxImageSide = 16384;

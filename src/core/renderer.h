@@ -3,18 +3,17 @@
 // is the sums divided by the number of passes. Tiles are spread over threads; every pixel's
 // samples are summed in order on one thread, so the bytes never depend on the thread count.
 
-#include <atomic>
-#include <cstdint>
-#include <functional>
-#include <span>
-
-#include <glm/vec3.hpp>
-
 #include "bvh.h"
 #include "framebuffer.h"
 #include "lab_shading.h"
 #include "render_settings.h"
 #include "scene.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <glm/vec3.hpp>
+#include <span>
 
 namespace raylab {
 

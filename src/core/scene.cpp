@@ -1,7 +1,6 @@
 #include "scene.h"
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace raylab {

@@ -1,13 +1,12 @@
 #pragma once
 // The geometry and materials the tracer sees: a flat list of triangles, each with a material.
 
+#include "aabb.h"
+
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
-
-#include "aabb.h"
 
 namespace raylab {
 
@@ -27,11 +26,11 @@ struct Triangle {
 };
 
 struct Scene {
-    std::string name;              // "cornell" or the file the scene came from
+    std::string name; // "cornell" or the file the scene came from
     std::vector<Triangle> triangles;
     std::vector<Material> materials;
 
-    Aabb bounds() const;           // of all finite vertices; empty() when there are none
+    Aabb bounds() const; // of all finite vertices; empty() when there are none
 };
 
 // Geometric unit normal of a triangle; (0,0,0) for a degenerate one.

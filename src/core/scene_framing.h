@@ -15,7 +15,8 @@ float navigationStep(const Aabb& bounds);
 
 // Frames a scene: the camera looks along +z at the centre of the bounding box from far enough to
 // see all of it at the current field of view and aspect; the light sits above and in front; the
-// shadow epsilon scales with the scene's size. Other settings are kept. An empty scene is left as is.
+// shadow epsilon scales with the scene's size. Other settings are kept. An empty scene is left as
+// is.
 void frameScene(const Scene& scene, RenderSettings& settings);
 
 } // namespace raylab

@@ -1,9 +1,8 @@
 #include "triangle_intersection.h"
 
 #include <cmath>
-#include <utility>
-
 #include <glm/common.hpp>
+#include <utility>
 
 namespace raylab {
 

@@ -4,11 +4,10 @@
 // one of the triangles that share it: no ray slips through, and no line shows between the two
 // triangles of a quad.
 
-#include <cstdint>
-
-#include <glm/vec3.hpp>
-
 #include "ray.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
 
 namespace raylab {
 

@@ -1,11 +1,10 @@
 // The pinhole camera: axes, pixel-centre rays, field of view and look-at.
 
-#include <cmath>
+#include "core/camera.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-
-#include "core/camera.h"
 
 namespace raylab {
 namespace {
@@ -41,9 +40,9 @@ TEST(Camera, PixelCentreRaysFollowTheLabFormula) {
     // d = normalize(right (x + 0.5 - W/2) + up (H/2 - y - 0.5) + forward f), f = H.
     for (const auto& [x, y] : {std::pair{0, 0}, {499, 0}, {0, 499}, {250, 250}, {123, 321}}) {
         const Ray ray = rays.through(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-        const glm::vec3 expected = glm::normalize(
-            glm::vec3(-(static_cast<float>(x) + 0.5f - 250.0f),
-                      250.0f - static_cast<float>(y) - 0.5f, 500.0f));
+        const glm::vec3 expected =
+            glm::normalize(glm::vec3(-(static_cast<float>(x) + 0.5f - 250.0f),
+                                     250.0f - static_cast<float>(y) - 0.5f, 500.0f));
         expectVecNear(ray.direction, expected);
         EXPECT_EQ(ray.origin, lab.position);
     }

@@ -1,10 +1,10 @@
 // The lab's box: its geometry, the colours where DESIGN.md puts them, shadows, and shadow acne.
 
-#include <gtest/gtest.h>
-
 #include "core/bvh.h"
 #include "core/cornell_box.h"
 #include "core/renderer.h"
+
+#include <gtest/gtest.h>
 
 namespace raylab {
 namespace {
@@ -22,8 +22,8 @@ protected:
     // The scene triangle the centre ray of pixel (x, y) hits under settings s.
     static Hit primaryHit(const RenderSettings& s, int x, int y) {
         const PrimaryRays rays(s.camera, s.width, s.height);
-        return closestHit(*bvh_, rays.through(static_cast<float>(x) + 0.5f,
-                                              static_cast<float>(y) + 0.5f));
+        return closestHit(*bvh_,
+                          rays.through(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
     }
     static LabColor colorAt(const RenderSettings& s, int x, int y) {
         const Hit hit = primaryHit(s, x, y);
@@ -68,7 +68,7 @@ TEST_F(CornellBox, HasTheLabsThirtyTrianglesInsideTheUnitCube) {
 }
 
 TEST_F(CornellBox, DefaultViewShowsEachWallWhereDesignSaysItIs) {
-    const RenderSettings s; // the lab's defaults, 500 x 500
+    const RenderSettings s;                            // the lab's defaults, 500 x 500
     EXPECT_EQ(colorAt(s, 250, 495), LabColor::Green);  // floor at the bottom
     EXPECT_EQ(colorAt(s, 250, 5), LabColor::Cyan);     // ceiling at the top
     EXPECT_EQ(colorAt(s, 5, 250), LabColor::Purple);   // left wall
@@ -79,8 +79,13 @@ TEST_F(CornellBox, DefaultViewShowsEachWallWhereDesignSaysItIs) {
 
     // The rendered colour at each is rho times one grey factor (white light and white N).
     const Framebuffer image = render(*scene_, *bvh_, s);
-    for (const auto& [x, y] : {std::pair{250, 495}, {250, 5}, {5, 250}, {495, 250}, {250, 180},
-                               {320, 360}, {170, 250}}) {
+    for (const auto& [x, y] : {std::pair{250, 495},
+                               {250, 5},
+                               {5, 250},
+                               {495, 250},
+                               {250, 180},
+                               {320, 360},
+                               {170, 250}}) {
         const glm::vec3 rho = labColor(colorAt(s, x, y));
         const glm::vec3 ratio = image.at(x, y) / rho;
         EXPECT_GT(ratio.x, 0.0f);

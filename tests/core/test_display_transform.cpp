@@ -1,11 +1,10 @@
 // Display transforms: the lab's clamp and sRGB with exposure.
 
-#include <cmath>
-#include <limits>
-
-#include <gtest/gtest.h>
-
 #include "core/display_transform.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
 
 namespace raylab {
 namespace {

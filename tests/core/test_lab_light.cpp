@@ -1,14 +1,13 @@
 // The lab's light model against closed-form answers on an analytic scene: one large quad facing
 // the camera, a point light, and (for shadows) a small square blocker.
 
-#include <cmath>
-
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
 #include "core/bvh.h"
 #include "core/renderer.h"
 #include "test_meshes.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
 namespace raylab {
 namespace {

@@ -1,11 +1,10 @@
 // The tile loop: every pixel exactly once, for any size and thread count; cancellation.
 
-#include <atomic>
-#include <vector>
-
-#include <gtest/gtest.h>
-
 #include "core/parallel_tiles.h"
+
+#include <atomic>
+#include <gtest/gtest.h>
+#include <vector>
 
 namespace raylab {
 namespace {

@@ -1,10 +1,9 @@
 // Settings validation: the lab's defaults pass, every nonsensical value is named.
 
-#include <limits>
+#include "core/render_settings.h"
 
 #include <gtest/gtest.h>
-
-#include "core/render_settings.h"
+#include <limits>
 
 namespace raylab {
 namespace {

@@ -1,14 +1,13 @@
 // The renderer: determinism across thread counts, progressive accumulation, cancellation.
 
-#include <atomic>
-#include <cstring>
-
-#include <gtest/gtest.h>
-
 #include "core/bvh.h"
 #include "core/cornell_box.h"
 #include "core/renderer.h"
 #include "core/sampling.h"
+
+#include <atomic>
+#include <cstring>
+#include <gtest/gtest.h>
 
 namespace raylab {
 namespace {

@@ -1,12 +1,12 @@
 // Framing a mesh: the whole bounding box in view, the light above and in front, scaled epsilon.
 
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/scene_framing.h"
 #include "test_meshes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
 namespace raylab {
 namespace {

@@ -1,15 +1,14 @@
 // The watertight ray-triangle test: exact hits, edges, closed meshes, and hostile input.
 
-#include <cmath>
-#include <limits>
-#include <random>
-
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
 #include "core/brute_force.h"
 #include "core/triangle_intersection.h"
 #include "test_meshes.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <limits>
+#include <random>
 
 namespace raylab {
 namespace {
@@ -79,7 +78,7 @@ TEST(TriangleIntersection, RespectsExclusiveDistanceBounds) {
 }
 
 TEST(TriangleIntersection, SignedZeroAndUnitDirectionComponents) {
-    const float directions[][3] = {{0.0f, 0.0f, 1.0f},  {-0.0f, 0.0f, 1.0f}, {0.0f, -0.0f, 1.0f},
+    const float directions[][3] = {{0.0f, 0.0f, 1.0f},   {-0.0f, 0.0f, 1.0f}, {0.0f, -0.0f, 1.0f},
                                    {-0.0f, -0.0f, 1.0f}, {1.0f, 0.0f, 0.0f},  {0.0f, 1.0f, -0.0f}};
     // Each direction, from an origin placed so the ray meets the triangle's interior.
     for (const auto& d : directions) {
@@ -118,11 +117,11 @@ TEST(TriangleIntersection, DegenerateAndNonFiniteTrianglesNeverHit) {
     Scene scene;
     scene.materials.push_back({});
     const glm::vec3 p{0.5f, 0.5f, 2.0f};
-    scene.triangles.push_back({p, p, p, 0});                                         // a point
-    scene.triangles.push_back({{0, 0, 2}, {1, 1, 2}, {2, 2, 2}, 0});                 // collinear
-    scene.triangles.push_back({{0, 0, 2}, {1, 1, 2}, {0, 0, 2}, 0});                 // repeated
-    scene.triangles.push_back({{nan, 0, 2}, {1, 0, 2}, {0, 1, 2}, 0});               // NaN
-    scene.triangles.push_back({{-inf, -inf, 2}, {inf, -inf, 2}, {0, inf, 2}, 0});    // infinite
+    scene.triangles.push_back({p, p, p, 0});                                      // a point
+    scene.triangles.push_back({{0, 0, 2}, {1, 1, 2}, {2, 2, 2}, 0});              // collinear
+    scene.triangles.push_back({{0, 0, 2}, {1, 1, 2}, {0, 0, 2}, 0});              // repeated
+    scene.triangles.push_back({{nan, 0, 2}, {1, 0, 2}, {0, 1, 2}, 0});            // NaN
+    scene.triangles.push_back({{-inf, -inf, 2}, {inf, -inf, 2}, {0, inf, 2}, 0}); // infinite
     for (const Triangle& tri : scene.triangles) {
         EXPECT_FALSE(isValidTriangle(tri));
     }
