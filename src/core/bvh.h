@@ -3,15 +3,14 @@
 // the closest hit (camera rays) and any hit (shadow rays). Both give exactly the answers of the
 // brute-force loops in brute_force.h: the same triangle test, the same tie-breaking.
 
-#include <cstddef>
-#include <cstdint>
-#include <vector>
-
-#include <glm/vec3.hpp>
-
 #include "bvh_wide.h"
 #include "ray.h"
 #include "scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
 
 namespace raylab {
 
@@ -33,13 +32,13 @@ struct BvhTriangle {
 };
 
 struct Bvh {
-    std::vector<BvhNode> nodes;         // nodes[0] is the root; empty for a scene with no valid triangle
+    std::vector<BvhNode> nodes; // nodes[0] is the root; empty for a scene with no valid triangle
     std::vector<BvhTriangle> triangles; // leaf order
     std::size_t skippedTriangles = 0;   // invalid ones (non-finite or zero area), never hit
 
     // The SIMD form (bvh_wide.h), built when the CPU runs AVX2 and BvhBuildOptions::simd is set.
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.
-    std::vector<BvhWideNode> wideNodes;          // wideNodes[0] is the root
+    std::vector<BvhWideNode> wideNodes;           // wideNodes[0] is the root
     std::vector<BvhTriangleBlock> triangleBlocks; // leaf order
 
     std::size_t memoryBytes() const;
@@ -47,10 +46,10 @@ struct Bvh {
 };
 
 struct BvhBuildOptions {
-    int maxLeafSize = 4;     // triangles per leaf, at most
-    int binCount = 16;       // SAH bins per axis
-    int threads = 0;         // 0 = every hardware thread; the result does not depend on it
-    bool simd = true;        // also build the 8-wide form when the CPU has AVX2
+    int maxLeafSize = 4; // triangles per leaf, at most
+    int binCount = 16;   // SAH bins per axis
+    int threads = 0;     // 0 = every hardware thread; the result does not depend on it
+    bool simd = true;    // also build the 8-wide form when the CPU has AVX2
 };
 
 // True when this CPU can run the AVX2 traversal.

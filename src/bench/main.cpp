@@ -1,0 +1,260 @@
+// raylab-bench [SCENE] [camera and light options] [--threads N] [--frames N] [--json]
+//
+// Traces the lab's workload (one primary ray per pixel, one shadow ray per lit hit; 1280 x 720
+// unless --width/--height say otherwise) with raylab's BVH on 1 thread and on N threads, best of
+// --frames frames, and, where Embree is built in, with Embree on the same rays, then compares
+// the two's closest hits. Bench-only flags: --scalar (raylab's scalar reference traversal
+// instead of the SIMD one), --no-embree. Exit codes: 2 usage, 1 other errors or too many
+// disagreeing hits.
+
+#include "bench_rays.h"
+#include "bench_report.h"
+#include "bench_timing.h"
+#include "core/bvh.h"
+#include "core/camera.h"
+#include "core/parallel_tiles.h"
+#include "core/scene_framing.h"
+#include "io/command_line.h"
+#include "io/mesh_loader.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+#ifdef RAYLAB_HAVE_EMBREE
+#include "embree_tracer.h"
+#endif
+
+namespace {
+
+using namespace raylab;
+using namespace raylab::bench;
+
+constexpr int kBenchWidth = 1280;
+constexpr int kBenchHeight = 720;
+
+struct BenchFlags {
+    bool scalar = false;
+    bool noEmbree = false;
+    bool sizeGiven = false;
+};
+
+// Removes the bench-only flags from args and notes whether the image size was given.
+BenchFlags takeBenchFlags(std::vector<const char*>& args) {
+    BenchFlags flags;
+    std::vector<const char*> kept;
+    for (const char* arg : args) {
+        if (std::strcmp(arg, "--scalar") == 0) {
+            flags.scalar = true;
+        } else if (std::strcmp(arg, "--no-embree") == 0) {
+            flags.noEmbree = true;
+        } else {
+            const std::string a = arg;
+            if (a.rfind("--width", 0) == 0 || a.rfind("--height", 0) == 0) {
+                flags.sizeGiven = true;
+            }
+            kept.push_back(arg);
+        }
+    }
+    args = kept;
+    return flags;
+}
+
+// Camera, light and epsilon of a scene: given ones kept, the rest framed as raylab-render does.
+void frameMissing(const Scene& scene, CommandLine& cl) {
+    RenderSettings framed = cl.settings;
+    if (cl.scene != "cornell") {
+        frameScene(scene, framed);
+    }
+    if (!cl.cameraGiven) {
+        cl.settings.camera = framed.camera;
+    }
+    if (!cl.lightGiven) {
+        cl.settings.light = framed.light;
+    }
+    if (!cl.shadowEpsilonGiven) {
+        cl.settings.shadowEpsilon = framed.shadowEpsilon;
+    }
+    if (cl.lookAt) {
+        lookAt(cl.settings.camera, *cl.lookAt);
+    }
+}
+
+// Times each tracer `frames` times, one frame each in turn, keeping each one's best and mean.
+void timeInTurns(const BenchRays& rays, int threads, int frames,
+                 const std::vector<const TileTracer*>& tracers,
+                 const std::vector<TracerFigures*>& figures, FrameTimes TracerFigures::*which) {
+    for (TracerFigures* f : figures) {
+        (f->*which).bestSeconds = 1e30;
+        (f->*which).meanSeconds = 0.0;
+    }
+    for (int frame = 0; frame < frames; ++frame) {
+        for (std::size_t i = 0; i < tracers.size(); ++i) {
+            const FrameTimes t = timeFrames(rays, threads, 1, *tracers[i]);
+            FrameTimes& out = figures[i]->*which;
+            out.bestSeconds = std::min(out.bestSeconds, t.bestSeconds);
+            out.meanSeconds += t.bestSeconds / frames;
+        }
+    }
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run(int argc, char** argv) {
+    std::vector<const char*> args(argv, argv + argc);
+    const BenchFlags flags = takeBenchFlags(args);
+    CommandLine cl;
+    std::string error;
+    if (!flags.sizeGiven) {
+        cl.settings.width = kBenchWidth;
+        cl.settings.height = kBenchHeight;
+    }
+    const int parsed =
+        parseCommandLine(static_cast<int>(args.size()), args.data(), Program::Bench, cl, error);
+    if (parsed != 0) {
+        std::cerr << "raylab-bench: " << error << "\n";
+        return parsed;
+    }
+    if (cl.help) {
+        std::cout << usage(Program::Bench)
+                  << "\nraylab-bench traces 1280x720 unless --width or --height is given.\n"
+                     "  --scalar                raylab's scalar reference traversal (binary BVH)\n"
+                     "  --no-embree             skip Embree\n";
+        return 0;
+    }
+    if (!flags.sizeGiven) {
+        cl.settings.width = kBenchWidth;
+        cl.settings.height = kBenchHeight;
+    }
+
+    BenchReport report;
+    Scene scene;
+    MeshLoadReport loadReport;
+    if (!loadScene(cl.scene, scene, loadReport, error)) {
+        std::cerr << "raylab-bench: " << error << "\n";
+        return 1;
+    }
+    if (const std::string warnings = describe(loadReport, cl.scene); !warnings.empty()) {
+        std::cerr << warnings << (warnings.back() == '\n' ? "" : "\n");
+    }
+    frameMissing(scene, cl);
+    const int threads = resolveThreadCount(cl.settings.threads);
+    const int frames = std::max(1, cl.benchFrames);
+    report.scene = cl.scene;
+    report.triangles = scene.triangles.size();
+    report.width = cl.settings.width;
+    report.height = cl.settings.height;
+    report.threads = threads;
+    report.frames = frames;
+
+    // raylab's BVH: best of three builds.
+    BvhBuildOptions buildOptions;
+    buildOptions.threads = threads;
+    buildOptions.simd = !flags.scalar;
+    Bvh bvh;
+    report.raylab.buildSeconds = 1e30;
+    for (int i = 0; i < 3; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        bvh = buildBvh(scene, buildOptions);
+        report.raylab.buildSeconds = std::min(report.raylab.buildSeconds, secondsSince(start));
+    }
+    report.skipped = bvh.skippedTriangles;
+    report.bvhBytes = bvh.memoryBytes();
+    report.bvhDepth = bvh.depth();
+    report.traversal = bvh.wideNodes.empty() ? "scalar binary" : "8-wide AVX2";
+
+    // The workload: primary rays, raylab's hits (untimed), then their shadow rays.
+    BenchRays rays = makePrimaryRays(cl.settings);
+    std::vector<Hit> hits(rays.primary.size());
+    std::vector<uint8_t> occluded;
+    auto closest = [&](const Ray& ray) {
+        return flags.scalar ? closestHitScalar(bvh, ray) : closestHit(bvh, ray);
+    };
+    auto any = [&](const Ray& ray) {
+        return flags.scalar ? anyHitScalar(bvh, ray) : anyHit(bvh, ray);
+    };
+    const TileTracer primaryOnly = [&](std::size_t tile) {
+        for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
+            hits[i] = closest(rays.primary[i]);
+        }
+    };
+    timeFrames(rays, threads, 1, primaryOnly);
+    addShadowRays(rays, hits, scene, cl.settings);
+    occluded.assign(rays.shadow.size(), 0);
+    report.primaryRays = rays.primary.size();
+    report.shadowRays = rays.shadow.size();
+
+    const TileTracer raylabTile = [&](std::size_t tile) {
+        for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
+            hits[i] = closest(rays.primary[i]);
+        }
+        for (std::size_t j = rays.shadowOffset[tile]; j < rays.shadowOffset[tile + 1]; ++j) {
+            occluded[j] = any(rays.shadow[j]) ? 1 : 0;
+        }
+    };
+    // raylab and Embree take turns frame by frame, so both see the same load on a shared machine.
+    std::vector<const TileTracer*> tracers{&raylabTile};
+    std::vector<TracerFigures*> figures{&report.raylab};
+#ifdef RAYLAB_HAVE_EMBREE
+    std::unique_ptr<EmbreeTracer> embree;
+    std::vector<Hit> embreeHits;
+    std::vector<uint8_t> embreeOccluded;
+    const TileTracer embreeTile = [&](std::size_t tile) {
+        embree->traceTile(rays, tile, embreeHits, embreeOccluded);
+    };
+    if (flags.noEmbree) {
+        report.embreeAbsent = "skipped (--no-embree)";
+    } else {
+        embree = std::make_unique<EmbreeTracer>(scene);
+        if (!embree->ok()) {
+            std::cerr << "raylab-bench: " << embree->error() << "\n";
+            return 1;
+        }
+        embreeHits.resize(rays.primary.size());
+        embreeOccluded.assign(rays.shadow.size(), 0);
+        report.hasEmbree = true;
+        report.embree.buildSeconds = embree->buildSeconds();
+        tracers.push_back(&embreeTile);
+        figures.push_back(&report.embree);
+    }
+#endif
+    timeInTurns(rays, 1, frames, tracers, figures, &TracerFigures::one);
+    timeInTurns(rays, threads, frames, tracers, figures, &TracerFigures::all);
+#ifdef RAYLAB_HAVE_EMBREE
+    if (embree) {
+        report.disagreeingHits = countDisagreeingHits(hits, embreeHits);
+        for (std::size_t j = 0; j < occluded.size(); ++j) {
+            report.disagreeingShadows += occluded[j] != embreeOccluded[j] ? 1 : 0;
+        }
+    }
+#endif
+
+    if (cl.json) {
+        printJson(std::cout, report);
+    } else {
+        printText(std::cout, report);
+    }
+    if (report.hasEmbree && report.disagreeingHits * kMaxDisagreement > report.primaryRays) {
+        std::cerr << "raylab-bench: " << report.disagreeingHits << " of " << report.primaryRays
+                  << " closest hits disagree with Embree (more than 1 in " << kMaxDisagreement
+                  << ")\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::cerr << "raylab-bench: " << e.what() << "\n";
+        return 1;
+    }
+}

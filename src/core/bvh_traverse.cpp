@@ -1,0 +1,132 @@
+// Scalar traversal of the binary BVH (the reference), and the dispatch to the SIMD traversal.
+
+#include "bvh.h"
+#include "bvh_box_ray.h"
+#include "bvh_wide_traverse.h"
+#include "triangle_intersection.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr int kScalarStackSize = 128; // the build bounds the binary depth well below this
+
+bool hitNode(const BoxRay& r, const BvhNode& node, float limit, float& tNear) {
+    const float bounds[2][3] = {{node.lower.x, node.lower.y, node.lower.z},
+                                {node.upper.x, node.upper.y, node.upper.z}};
+    return hitBox(r, bounds, limit, tNear);
+}
+
+// Visits the leaves whose boxes the ray enters, nearest child first, skipping nodes that start
+// beyond limit(). visitLeaf(node) returns true to stop the traversal.
+template <class Limit, class VisitLeaf>
+void traverseBinary(const Bvh& bvh, const BoxRay& r, Limit limit, VisitLeaf visitLeaf) {
+    struct Entry {
+        uint32_t node;
+        float tNear;
+    };
+    Entry stack[kScalarStackSize];
+    int size = 0;
+    float tRoot;
+    if (!hitNode(r, bvh.nodes[0], limit(), tRoot)) {
+        return;
+    }
+    stack[size++] = {0, tRoot};
+    while (size > 0) {
+        const Entry e = stack[--size];
+        if (e.tNear > limit() * kBoxRoundUp) {
+            continue;
+        }
+        const BvhNode& node = bvh.nodes[e.node];
+        if (node.isLeaf()) {
+            if (visitLeaf(node)) {
+                return;
+            }
+            continue;
+        }
+        float t0, t1;
+        const bool hit0 = hitNode(r, bvh.nodes[node.index], limit(), t0);
+        const bool hit1 = hitNode(r, bvh.nodes[node.index + 1], limit(), t1);
+        if (hit0 && hit1) {
+            const bool firstNear = t0 <= t1;
+            stack[size++] = {firstNear ? node.index + 1 : node.index, firstNear ? t1 : t0};
+            stack[size++] = {firstNear ? node.index : node.index + 1, firstNear ? t0 : t1};
+        } else if (hit0) {
+            stack[size++] = {node.index, t0};
+        } else if (hit1) {
+            stack[size++] = {node.index + 1, t1};
+        }
+    }
+}
+
+} // namespace
+
+Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
+    const WatertightRay wray(ray);
+    Hit best;
+    if (bvh.nodes.empty() || !wray.valid) {
+        return best;
+    }
+    float limit = ray.tMax;
+    traverseBinary(
+        bvh, BoxRay(ray), [&] { return limit; },
+        [&](const BvhNode& leaf) {
+            for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
+                const BvhTriangle& tri = bvh.triangles[i];
+                float t, u, v;
+                if (intersectTriangle(wray, tri.v0, tri.v1, tri.v2, t, u, v) &&
+                    (t < best.t || (t == best.t && tri.sceneIndex < best.triangle))) {
+                    best = Hit{t, u, v, tri.sceneIndex};
+                    limit = t;
+                }
+            }
+            return false;
+        });
+    return best;
+}
+
+bool anyHitScalar(const Bvh& bvh, const Ray& ray) {
+    const WatertightRay wray(ray);
+    if (bvh.nodes.empty() || !wray.valid) {
+        return false;
+    }
+    bool found = false;
+    traverseBinary(
+        bvh, BoxRay(ray), [&] { return ray.tMax; },
+        [&](const BvhNode& leaf) {
+            for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
+                const BvhTriangle& tri = bvh.triangles[i];
+                float t, u, v;
+                if (intersectTriangle(wray, tri.v0, tri.v1, tri.v2, t, u, v)) {
+                    found = true;
+                    return true;
+                }
+            }
+            return false;
+        });
+    return found;
+}
+
+Hit closestHit(const Bvh& bvh, const Ray& ray) {
+    if (bvh.wideNodes.empty()) {
+        return closestHitScalar(bvh, ray);
+    }
+    return closestHitWide(bvh, ray);
+}
+
+bool anyHit(const Bvh& bvh, const Ray& ray) {
+    if (bvh.wideNodes.empty()) {
+        return anyHitScalar(bvh, ray);
+    }
+    return anyHitWide(bvh, ray);
+}
+
+bool bvhSimdSupported() {
+#if defined(__x86_64__) || defined(__i386__)
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+} // namespace raylab

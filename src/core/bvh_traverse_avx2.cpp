@@ -1,0 +1,340 @@
+// AVX2 traversal of the 8-wide BVH: 8 child boxes per node test and 8 triangles per block test.
+//
+// Only these functions use AVX2 (target attribute), and they only run when the wide BVH was
+// built, which buildBvh does only on CPUs with AVX2; the rest of the library stays baseline x86-64.
+//
+// The 8-lane triangle test is intersectTriangle (triangle_intersection.cpp) operation for
+// operation: the same subtractions, products and quotients in the same order, each rounded the
+// same way (IEEE single precision, no fused multiply-add: core builds with -ffp-contract=off), so
+// t, u and v are bit for bit those of the scalar test. Lanes where an edge function is exactly
+// zero, where the scalar test switches to double precision, go to intersectTriangle itself.
+
+#include "bvh_wide_traverse.h"
+
+#if defined(__x86_64__) || defined(__i386__)
+
+#include "bvh_box_ray.h"
+#include "bvh_collapse.h"
+
+#include <cmath>
+#include <glm/common.hpp>
+#include <immintrin.h>
+#include <utility>
+
+#define RAYLAB_AVX2 __attribute__((target("avx2")))
+
+namespace raylab {
+
+namespace {
+
+// The per-ray constants, broadcast to 8 lanes.
+struct WideRay {
+    // Box test: origin, 1/direction, offsets of the near and far bound in BvhWideNode's floats.
+    __m256 origin[3], inverse[3];
+    int nearOffset[3], farOffset[3];
+    __m256 tMin;
+    // Triangle test (WatertightRay): origin and vertex offsets in permuted order kx, ky, kz.
+    __m256 originK[3];
+    int vertexOffset[3];
+    __m256 shearX, shearY, shearZ, tMax;
+};
+
+inline bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Fills r for `ray`; false for the rays WatertightRay calls invalid (they hit nothing). The
+// permutation and shear are WatertightRay's constructor's, computed the same way (tests check
+// that both paths agree bit for bit); the six quotients share one 8-lane division.
+RAYLAB_AVX2 inline bool makeWideRay(const Ray& ray, WideRay& r) {
+    const glm::vec3& d = ray.direction;
+    if (!isFinite(ray.origin) || !isFinite(d) || (d.x == 0.0f && d.y == 0.0f && d.z == 0.0f) ||
+        std::isnan(ray.tMin) || std::isnan(ray.tMax)) {
+        return false;
+    }
+    const glm::vec3 a = glm::abs(d);
+    const int kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    int kx = kz == 2 ? 0 : kz + 1;
+    int ky = kx == 2 ? 0 : kx + 1;
+    if (d[kz] < 0.0f) {
+        std::swap(kx, ky);
+    }
+    const int k[3] = {kx, ky, kz};
+    // Built in registers (_mm256_set_ps), not through memory: a 256-bit load of values just
+    // stored one by one stalls on store forwarding.
+    const __m256 numerator = _mm256_set_ps(1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f, d[ky], d[kx]);
+    const __m256 denominator = _mm256_set_ps(1.0f, 1.0f, boxDirection(d.z), boxDirection(d.y),
+                                             boxDirection(d.x), d[kz], d[kz], d[kz]);
+    alignas(32) float q[8];
+    _mm256_store_ps(q, _mm256_div_ps(numerator, denominator));
+    for (int i = 0; i < 3; ++i) {
+        const float inverse = q[3 + i];
+        const int nearIsUpper = inverse >= 0.0f ? 0 : 1;
+        r.origin[i] = _mm256_set1_ps(ray.origin[i]);
+        r.inverse[i] = _mm256_set1_ps(inverse);
+        // lower[i] starts at float i * 8, upper[i] at 24 + i * 8.
+        r.nearOffset[i] = nearIsUpper * 24 + i * kWideLanes;
+        r.farOffset[i] = (1 - nearIsUpper) * 24 + i * kWideLanes;
+        r.originK[i] = _mm256_set1_ps(ray.origin[k[i]]);
+        r.vertexOffset[i] = k[i] * kWideLanes;
+    }
+    r.shearX = _mm256_set1_ps(q[0]);
+    r.shearY = _mm256_set1_ps(q[1]);
+    r.shearZ = _mm256_set1_ps(q[2]);
+    r.tMin = _mm256_set1_ps(ray.tMin);
+    r.tMax = _mm256_set1_ps(ray.tMax);
+    return true;
+}
+
+// Slab test of the 8 children (bvh_box_ray.h's hitBox, 8 at once). Returns the mask of children
+// whose box overlaps (tMin, limit] and their entry distances.
+RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const WideRay& r, float limit,
+                                   __m256& tNear) {
+    const float* b = &node.lower[0][0];
+    __m256 t0[3], t1[3];
+    for (int a = 0; a < 3; ++a) {
+        t0[a] = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b + r.nearOffset[a]), r.origin[a]),
+                              r.inverse[a]);
+        t1[a] = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b + r.farOffset[a]), r.origin[a]),
+                              r.inverse[a]);
+    }
+    const __m256 tn = _mm256_max_ps(_mm256_max_ps(t0[0], t0[1]), _mm256_max_ps(t0[2], r.tMin));
+    const __m256 tf =
+        _mm256_min_ps(_mm256_min_ps(t1[0], t1[1]), _mm256_min_ps(t1[2], _mm256_set1_ps(limit)));
+    tNear = tn;
+    return _mm256_movemask_ps(
+        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ));
+}
+
+// The watertight test of 8 triangles. `hits`: lanes hit with tMin < t < tMax; `exact`: lanes
+// with an edge function of exactly zero, which the caller must test with intersectTriangle.
+struct BlockHits {
+    int hits;
+    int exact;
+    __m256 t, e1, e2, det;
+};
+
+RAYLAB_AVX2 inline BlockHits intersectBlock(const BvhTriangleBlock& block, const WideRay& r) {
+    const float* v = &block.vertex[0][0][0];
+    __m256 x[3], y[3], z[3]; // sheared a, b, c; z is a[kz] etc. before scaling
+    for (int k = 0; k < 3; ++k) {
+        const float* p = v + k * 3 * kWideLanes;
+        const __m256 dx = _mm256_sub_ps(_mm256_load_ps(p + r.vertexOffset[0]), r.originK[0]);
+        const __m256 dy = _mm256_sub_ps(_mm256_load_ps(p + r.vertexOffset[1]), r.originK[1]);
+        z[k] = _mm256_sub_ps(_mm256_load_ps(p + r.vertexOffset[2]), r.originK[2]);
+        x[k] = _mm256_sub_ps(dx, _mm256_mul_ps(r.shearX, z[k]));
+        y[k] = _mm256_sub_ps(dy, _mm256_mul_ps(r.shearY, z[k]));
+    }
+    // e0 = cx*by - cy*bx; e1 = ax*cy - ay*cx; e2 = bx*ay - by*ax
+    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[1]), _mm256_mul_ps(y[2], x[1]));
+    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[2]), _mm256_mul_ps(y[0], x[2]));
+    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[0]), _mm256_mul_ps(y[1], x[0]));
+
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 anyZero = _mm256_or_ps(
+        _mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_EQ_OQ), _mm256_cmp_ps(e1, zero, _CMP_EQ_OQ)),
+        _mm256_cmp_ps(e2, zero, _CMP_EQ_OQ));
+    // With no edge function zero, the scalar test's "some < 0 and some > 0" is "the signs
+    // differ". (A NaN lane may pass here; its det is NaN and fails below, as in the scalar test.)
+    const __m256 signsDiffer = _mm256_or_ps(_mm256_xor_ps(e0, e1), _mm256_xor_ps(e0, e2));
+    const int exact = _mm256_movemask_ps(anyZero);
+    const int inside = ~(_mm256_movemask_ps(signsDiffer) | exact) & 0xff;
+    if (inside == 0) { // most blocks: the ray passes all 8 triangles
+        return {0, exact, zero, zero, zero, zero};
+    }
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
+    const __m256 absDet = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+    // det != 0 and finite: 0 < |det| < inf (false for NaN).
+    const __m256 detOk =
+        _mm256_and_ps(_mm256_cmp_ps(absDet, zero, _CMP_GT_OQ),
+                      _mm256_cmp_ps(absDet, _mm256_set1_ps(kInfinity), _CMP_LT_OQ));
+
+    const __m256 tScaled =
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e0, _mm256_mul_ps(r.shearZ, z[0])),
+                                    _mm256_mul_ps(e1, _mm256_mul_ps(r.shearZ, z[1]))),
+                      _mm256_mul_ps(e2, _mm256_mul_ps(r.shearZ, z[2])));
+    const __m256 t = _mm256_div_ps(tScaled, det);
+    const __m256 inRange =
+        _mm256_and_ps(_mm256_cmp_ps(t, r.tMin, _CMP_GT_OQ), _mm256_cmp_ps(t, r.tMax, _CMP_LT_OQ));
+    const int hits = inside & _mm256_movemask_ps(_mm256_and_ps(detOk, inRange));
+    return {hits, exact, t, e1, e2, det};
+}
+
+// A lane's triangle through the scalar test (for lanes with an exactly zero edge function).
+inline bool intersectLane(const BvhTriangleBlock& block, int lane, const Ray& ray, float& t,
+                          float& u, float& v) {
+    const WatertightRay w(ray);
+    glm::vec3 p[3];
+    for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) {
+            p[k][a] = block.vertex[k][a][lane];
+        }
+    }
+    return intersectTriangle(w, p[0], p[1], p[2], t, u, v);
+}
+
+inline bool isLeaf(uint32_t ref) { return (ref & kWideLeafFlag) != 0; }
+inline uint32_t firstBlock(uint32_t ref) { return ref & kWideFirstBlockMask; }
+inline uint32_t blockCount(uint32_t ref) { return ((ref & ~kWideLeafFlag) >> kWideBlockShift) + 1; }
+
+struct StackEntry {
+    uint32_t ref;
+    float tNear;
+};
+
+// Pushes the hit children of a node, farthest first, and returns the nearest (not pushed).
+RAYLAB_AVX2 inline uint32_t pushChildren(const BvhWideNode& node, int mask, __m256 tNear,
+                                         StackEntry* stack, int& size) {
+    alignas(32) float t[kWideLanes];
+    _mm256_store_ps(t, tNear);
+    if ((mask & (mask - 1)) == 0) {
+        return node.child[__builtin_ctz(static_cast<unsigned>(mask))];
+    }
+    StackEntry hits[kWideLanes];
+    int n = 0;
+    for (unsigned m = static_cast<unsigned>(mask); m != 0; m &= m - 1) {
+        const int c = __builtin_ctz(m);
+        // Insertion sort, nearest last.
+        int i = n++;
+        for (; i > 0 && hits[i - 1].tNear < t[c]; --i) {
+            hits[i] = hits[i - 1];
+        }
+        hits[i] = {node.child[c], t[c]};
+    }
+    for (int i = 0; i < n - 1; ++i) {
+        stack[size++] = hits[i];
+    }
+    return hits[n - 1].ref;
+}
+
+} // namespace
+
+RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
+    WideRay r;
+    Hit best;
+    if (!makeWideRay(original, r)) {
+        return best;
+    }
+    float limit = original.tMax; // best.t once a hit is found
+    float bestDet = 1.0f;        // best.u and best.v hold e1 and e2 until divided by this
+    StackEntry stack[kWideStackSize];
+    int size = 0;
+    uint32_t ref = 0; // the root
+    for (;;) {
+        if (!isLeaf(ref)) {
+            __m256 tNear;
+            const BvhWideNode& node = bvh.wideNodes[ref];
+            const int mask = hitChildren(node, r, limit, tNear);
+            if (mask != 0) {
+                ref = pushChildren(node, mask, tNear, stack, size);
+                continue;
+            }
+        } else {
+            const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+            for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
+                const BlockHits h = intersectBlock(*block, r);
+                const int closer =
+                    h.hits &
+                    _mm256_movemask_ps(_mm256_cmp_ps(h.t, _mm256_set1_ps(limit), _CMP_LE_OQ));
+                if (closer != 0) {
+                    alignas(32) float t[kWideLanes], e1[kWideLanes], e2[kWideLanes],
+                        det[kWideLanes];
+                    _mm256_store_ps(t, h.t);
+                    _mm256_store_ps(e1, h.e1);
+                    _mm256_store_ps(e2, h.e2);
+                    _mm256_store_ps(det, h.det);
+                    for (unsigned m = static_cast<unsigned>(closer); m != 0; m &= m - 1) {
+                        const int lane = __builtin_ctz(m);
+                        const uint32_t index = block->sceneIndex[lane];
+                        if (t[lane] < best.t || (t[lane] == best.t && index < best.triangle)) {
+                            // u = e1 / det and v = e2 / det once the winner is known.
+                            best = Hit{t[lane], e1[lane], e2[lane], index};
+                            bestDet = det[lane];
+                            limit = best.t;
+                        }
+                    }
+                }
+                for (unsigned m = static_cast<unsigned>(h.exact); m != 0; m &= m - 1) {
+                    const int lane = __builtin_ctz(m);
+                    const uint32_t index = block->sceneIndex[lane];
+                    float t, u, v;
+                    if (intersectLane(*block, lane, original, t, u, v) &&
+                        (t < best.t || (t == best.t && index < best.triangle))) {
+                        best = Hit{t, u, v, index};
+                        bestDet = 1.0f; // u and v are final
+                        limit = best.t;
+                    }
+                }
+            }
+        }
+        // Next: the nearest pending entry that may still hold a closer (or tied) hit.
+        for (;;) {
+            if (size == 0) {
+                best.u /= bestDet;
+                best.v /= bestDet;
+                return best;
+            }
+            const StackEntry e = stack[--size];
+            if (e.tNear <= limit * kBoxRoundUp) {
+                ref = e.ref;
+                break;
+            }
+        }
+    }
+}
+
+RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
+    WideRay r;
+    if (!makeWideRay(original, r)) {
+        return false;
+    }
+    const float limit = original.tMax;
+    uint32_t stack[kWideStackSize];
+    int size = 0;
+    uint32_t ref = 0;
+    for (;;) {
+        if (!isLeaf(ref)) {
+            __m256 tNear;
+            const BvhWideNode& node = bvh.wideNodes[ref];
+            const int mask = hitChildren(node, r, limit, tNear);
+            // Order does not matter for any hit: push all but one, descend into that one.
+            if (mask != 0) {
+                unsigned m = static_cast<unsigned>(mask);
+                for (; (m & (m - 1)) != 0; m &= m - 1) {
+                    stack[size++] = node.child[__builtin_ctz(m)];
+                }
+                ref = node.child[__builtin_ctz(m)];
+                continue;
+            }
+        } else {
+            const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+            for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
+                const BlockHits h = intersectBlock(*block, r);
+                if (h.hits != 0) {
+                    return true;
+                }
+                for (unsigned m = static_cast<unsigned>(h.exact); m != 0; m &= m - 1) {
+                    float t, u, v;
+                    if (intersectLane(*block, __builtin_ctz(m), original, t, u, v)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        if (size == 0) {
+            return false;
+        }
+        ref = stack[--size];
+    }
+}
+
+} // namespace raylab
+
+#else // not x86: buildBvh never builds the wide form, so these are never called.
+
+namespace raylab {
+Hit closestHitWide(const Bvh&, const Ray&) { return Hit{}; }
+bool anyHitWide(const Bvh&, const Ray&) { return false; }
+} // namespace raylab
+
+#endif
