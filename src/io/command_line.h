@@ -3,11 +3,11 @@
 // Flags override --settings FILE.json, which overrides the defaults (the lab's, or for a mesh the
 // framing of core/scene_framing.h).
 
-#include <optional>
-#include <string>
-
 #include "core/render_settings.h"
 #include "core/scene.h"
+
+#include <optional>
+#include <string>
 
 namespace raylab {
 
@@ -30,22 +30,22 @@ struct CommandLine {
     std::string scene = "cornell";
     RenderSettings settings;
     // Which parts were given (by flag or settings file); a mesh scene frames the rest.
-    bool cameraGiven = false;        // position, yaw or pitch
-    bool lightGiven = false;         // the light's position
+    bool cameraGiven = false; // position, yaw or pitch
+    bool lightGiven = false;  // the light's position
     bool shadowEpsilonGiven = false;
     GivenSettings given;             // the same, field by field
     std::optional<glm::vec3> lookAt; // --look-at, applied after the scene is known
 
     bool help = false;
-    std::string output;        // render: -o FILE
-    std::string saveSettings;  // --save-settings FILE.json
+    std::string output;       // render: -o FILE
+    std::string saveSettings; // --save-settings FILE.json
     // viewer
-    int frames = 0;            // --frames N: quit after N shown frames (0 = run until closed)
-    std::string screenshot;    // --screenshot FILE: save the last shown frame
+    int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
+    std::string screenshot;          // --screenshot FILE: save the last shown frame
     std::string screenshotDir = "."; // --screenshot-dir DIR
     // bench
-    bool json = false;         // --json
-    int benchFrames = 5;       // --frames N for the bench: best of N
+    bool json = false;   // --json
+    int benchFrames = 5; // --frames N for the bench: best of N
 };
 
 // Returns 0 on success; 2 with a one-line `error` for usage errors (unknown flag, missing or

@@ -3,13 +3,13 @@
 // RGB). Every writer writes a temporary file beside the target and renames it, so a failed write
 // never leaves a partial file.
 
+#include "core/framebuffer.h"
+#include "core/render_settings.h"
+
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
-
-#include "core/framebuffer.h"
-#include "core/render_settings.h"
 
 namespace raylab {
 

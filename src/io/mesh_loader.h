@@ -1,19 +1,19 @@
 #pragma once
 // Turns mesh files (OBJ with MTL, PLY, glTF/GLB and whatever else Assimp reads) into a core Scene.
 
+#include "core/scene.h"
+
 #include <cstddef>
 #include <string>
-
-#include "core/scene.h"
 
 namespace raylab {
 
 // What the loader skipped or had to guess; each count is reported as one warning line.
 struct MeshLoadReport {
-    std::size_t nonFiniteTriangles = 0; // a NaN or infinite vertex coordinate
+    std::size_t nonFiniteTriangles = 0;  // a NaN or infinite vertex coordinate
     std::size_t degenerateTriangles = 0; // zero area
-    std::size_t badIndexFaces = 0;      // an index out of range
-    std::size_t nonTriangleFaces = 0;   // points and lines, which have no surface
+    std::size_t badIndexFaces = 0;       // an index out of range
+    std::size_t nonTriangleFaces = 0;    // points and lines, which have no surface
     bool missingMaterialLibrary = false; // e.g. an OBJ whose MTL file is missing
 };
 

@@ -14,10 +14,10 @@
 // Floats are written in the shortest form that reads back to the same float, so a save and a load
 // reproduce the settings bit for bit.
 
+#include "core/render_settings.h"
+
 #include <set>
 #include <string>
-
-#include "core/render_settings.h"
 
 namespace raylab {
 

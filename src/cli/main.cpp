@@ -1,0 +1,143 @@
+// raylab-render: the headless renderer. Parses the command line, loads the scene, renders, and
+// writes the image by its extension. Exit codes: 0 done, 2 usage error, 1 anything else; every
+// error is one line on stderr and leaves no output file behind.
+
+#include "core/bvh.h"
+#include "core/renderer.h"
+#include "io/atomic_file.h"
+#include "io/command_line.h"
+#include "io/image_io.h"
+#include "io/mesh_loader.h"
+#include "io/settings_json.h"
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
+#include <unistd.h>
+
+namespace {
+
+using raylab::CommandLine;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kProgram = "raylab-render";
+
+int fail(int code, const std::string& message) {
+    std::fprintf(stderr, "%s: %s\n", kProgram, message.c_str());
+    return code;
+}
+
+// "\rrendering 42%" on stderr, only when stderr is a terminal and the render has run for more
+// than a second; erased when the render ends.
+class ProgressLine {
+public:
+    ProgressLine() : enabled_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()) {}
+    ~ProgressLine() {
+        if (shown_) {
+            std::fputs("\r                \r", stderr);
+            std::fflush(stderr);
+        }
+    }
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+    void update(double fraction) {
+        if (!enabled_ || Clock::now() - start_ < std::chrono::seconds(1)) {
+            return;
+        }
+        const int percent = static_cast<int>(fraction * 100.0);
+        if (percent != lastPercent_) {
+            std::fprintf(stderr, "\rrendering %d%%", percent);
+            std::fflush(stderr);
+            lastPercent_ = percent;
+            shown_ = true;
+        }
+    }
+
+private:
+    bool enabled_;
+    Clock::time_point start_;
+    bool shown_ = false;
+    int lastPercent_ = -1;
+};
+
+int run(int argc, char** argv) {
+    CommandLine cl;
+    std::string error;
+    if (const int code = raylab::parseCommandLine(argc, argv, raylab::Program::Render, cl, error);
+        code != 0) {
+        return fail(code, error);
+    }
+    if (cl.help) {
+        std::fputs(raylab::usage(raylab::Program::Render).c_str(), stdout);
+        return 0;
+    }
+    // Bad output paths fail now, not after the render.
+    if (!raylab::checkWritable(cl.output, error)) {
+        return fail(1, error);
+    }
+    if (!cl.saveSettings.empty() && !raylab::checkWritable(cl.saveSettings, error)) {
+        return fail(1, error);
+    }
+
+    raylab::Scene scene;
+    raylab::MeshLoadReport report;
+    if (!raylab::loadScene(cl.scene, scene, report, error)) {
+        return fail(1, error);
+    }
+    if (const std::string warnings = raylab::describe(report, cl.scene); !warnings.empty()) {
+        std::fputs(warnings.c_str(), stderr);
+    }
+    if (const std::string why = raylab::finishSettings(scene, cl); !why.empty()) {
+        return fail(1, why);
+    }
+    const raylab::RenderSettings& settings = cl.settings;
+
+    const auto buildStart = Clock::now();
+    raylab::BvhBuildOptions bvhOptions;
+    bvhOptions.threads = settings.threads;
+    const raylab::Bvh bvh = raylab::buildBvh(scene, bvhOptions);
+    const auto start = Clock::now();
+    const double buildSeconds = std::chrono::duration<double>(start - buildStart).count();
+
+    raylab::RayCounts counts;
+    raylab::Framebuffer image;
+    {
+        ProgressLine progress; // erased at the end of this block
+        raylab::PassOptions passOptions;
+        passOptions.progress = [&progress](double fraction) { progress.update(fraction); };
+        image = raylab::render(scene, bvh, settings, &counts, passOptions);
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    const std::string json = raylab::settingsToJson(settings, cl.scene);
+    if (!raylab::writeImage(cl.output, image, settings.display, settings.exposure, error,
+                            {{"Software", "raylab-render"}, {"raylab settings", json}})) {
+        return fail(1, error);
+    }
+    if (!cl.saveSettings.empty() &&
+        !raylab::saveSettingsFile(cl.saveSettings, settings, cl.scene, error)) {
+        return fail(1, error);
+    }
+
+    const double rays = static_cast<double>(counts.primary + counts.shadow);
+    std::fprintf(
+        stderr, "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s -> %s\n",
+        kProgram, settings.width, settings.height, settings.samplesPerPixel, scene.triangles.size(),
+        buildSeconds, seconds, seconds > 0.0 ? rays / seconds * 1e-6 : 0.0, cl.output.c_str());
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        return fail(1, "out of memory");
+    } catch (const std::exception& e) {
+        return fail(1, e.what());
+    }
+}

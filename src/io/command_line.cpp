@@ -1,0 +1,521 @@
+// The shared command line: one table of options, each with the programs that take it and a
+// handler that parses its value into CommandLine. Parsing is two passes: the words are first split
+// into options and values (so unknown options and missing values are found before anything is
+// applied), then the --settings file is applied, then every other option in the order given.
+
+#include "io/command_line.h"
+
+#include "core/camera.h"
+#include "core/scene_framing.h"
+#include "io/image_io.h"
+#include "io/number_parse.h"
+#include "io/settings_json.h"
+#include "io/text_util.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+enum ProgramMask : unsigned {
+    kRender = 1u << 0,
+    kViewer = 1u << 1,
+    kBench = 1u << 2,
+    kAll = kRender | kViewer | kBench,
+};
+
+unsigned maskOf(Program program) {
+    switch (program) {
+    case Program::Render: return kRender;
+    case Program::Viewer: return kViewer;
+    case Program::Bench: return kBench;
+    }
+    return 0;
+}
+
+// What an option handler needs besides the value: the state of the parse so far.
+struct ParseState {
+    CommandLine& out;
+    Program program;
+    std::optional<float> focal; // --focal, turned into a field of view once the height is final
+    bool fovFlag = false;
+};
+
+// Returns an empty string, or what is wrong with the value (the caller adds the option's name).
+using Handler = std::function<std::string(const std::string& value, ParseState& state)>;
+
+struct Option {
+    const char* name;     // "--width"
+    const char* argument; // "N" for the help text; nullptr for a switch
+    unsigned programs;
+    const char* help;
+    Handler handle;
+};
+
+std::string quoted(const std::string& value) { return "'" + value + "'"; }
+
+Handler intIn(int lo, int hi, int CommandLine::*field) {
+    return [=](const std::string& value, ParseState& s) -> std::string {
+        int v = 0;
+        if (!parseInt(value, v) || v < lo || v > hi) {
+            return "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                   ", got " + quoted(value);
+        }
+        s.out.*field = v;
+        return {};
+    };
+}
+
+Handler settingsIntIn(int lo, int hi, int RenderSettings::*field) {
+    return [=](const std::string& value, ParseState& s) -> std::string {
+        int v = 0;
+        if (!parseInt(value, v) || v < lo || v > hi) {
+            return "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                   ", got " + quoted(value);
+        }
+        s.out.settings.*field = v;
+        return {};
+    };
+}
+
+// A colour as "P" (white light of that power) or "r,g,b" (colour = rgb / max, intensity = max;
+// all zero gives colour 1, intensity 0). Every part must be finite and >= 0.
+bool parsePower(const std::string& value, glm::vec3& color, float& intensity) {
+    glm::vec3 rgb(0.0f);
+    float single = 0.0f;
+    if (parseFloat(value, single)) {
+        rgb = glm::vec3(single);
+    } else if (!parseVec3(value, rgb)) {
+        return false;
+    }
+    if (rgb.x < 0.0f || rgb.y < 0.0f || rgb.z < 0.0f) {
+        return false;
+    }
+    const float peak = std::max({rgb.x, rgb.y, rgb.z});
+    if (peak == 0.0f) {
+        color = glm::vec3(1.0f);
+        intensity = 0.0f;
+    } else {
+        color = glm::min(rgb / peak, glm::vec3(1.0f));
+        intensity = peak;
+    }
+    return true;
+}
+
+std::string expected(const char* what, const std::string& value) {
+    return std::string("expected ") + what + ", got " + quoted(value);
+}
+
+const std::vector<Option>& options() {
+    static const std::vector<Option> table = {
+        {"--width", "N", kAll, "image width in pixels, 1..16384 (default 500)",
+         settingsIntIn(1, kMaxImageSide, &RenderSettings::width)},
+        {"--height", "N", kAll, "image height in pixels, 1..16384 (default 500)",
+         settingsIntIn(1, kMaxImageSide, &RenderSettings::height)},
+        {"--camera-pos", "X,Y,Z", kAll, "camera position (default 0,0,-3)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseVec3(v, s.out.settings.camera.position)) {
+                 return expected("three finite numbers x,y,z", v);
+             }
+             s.out.given.cameraPosition = true;
+             return {};
+         }},
+        {"--yaw", "DEG", kAll, "turn about the world's y axis, positive to the left (default 0)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseFloat(v, s.out.settings.camera.yawDegrees)) {
+                 return expected("a finite angle in degrees", v);
+             }
+             s.out.given.cameraYaw = true;
+             return {};
+         }},
+        {"--pitch", "DEG", kAll, "look up (positive) or down, within (-90, 90) (default 0)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float deg = 0.0f;
+             if (!parseFloat(v, deg) || deg <= -90.0f || deg >= 90.0f) {
+                 return expected("an angle in degrees within (-90, 90)", v);
+             }
+             s.out.settings.camera.pitchDegrees = deg;
+             s.out.given.cameraPitch = true;
+             return {};
+         }},
+        {"--look-at", "X,Y,Z", kAll, "turn the camera to look at this point (after framing)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             glm::vec3 target(0.0f);
+             if (!parseVec3(v, target)) {
+                 return expected("three finite numbers x,y,z", v);
+             }
+             s.out.lookAt = target;
+             return {};
+         }},
+        {"--fov", "DEG", kAll, "vertical field of view within (0, 180) (default 53.13, the lab's)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float deg = 0.0f;
+             if (!parseFloat(v, deg) || deg <= 0.0f || deg >= 180.0f) {
+                 return expected("an angle in degrees within (0, 180)", v);
+             }
+             s.out.settings.camera.verticalFovDegrees = deg;
+             s.out.given.cameraFov = true;
+             s.fovFlag = true;
+             return {};
+         }},
+        {"--focal", "PX", kAll, "focal length in pixels instead of --fov (the lab's is the height)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float px = 0.0f;
+             if (!parseFloat(v, px) || px <= 0.0f) {
+                 return expected("a focal length in pixels > 0", v);
+             }
+             s.focal = px;
+             s.out.given.cameraFov = true;
+             return {};
+         }},
+        {"--light-pos", "X,Y,Z", kAll, "point light position (default 0,0.5,-0.7)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseVec3(v, s.out.settings.light.position)) {
+                 return expected("three finite numbers x,y,z", v);
+             }
+             s.out.given.lightPosition = true;
+             return {};
+         }},
+        {"--light-power", "P|R,G,B", kAll,
+         "light power in watts, white or per channel (default 14)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parsePower(v, s.out.settings.light.color, s.out.settings.light.intensity)) {
+                 return expected("a power >= 0 or r,g,b with each >= 0", v);
+             }
+             s.out.given.lightColor = true;
+             s.out.given.lightIntensity = true;
+             return {};
+         }},
+        {"--indirect", "V|R,G,B", kAll,
+         "constant indirect light, grey or per channel (default 0.5)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parsePower(v, s.out.settings.indirectColor, s.out.settings.indirectIntensity)) {
+                 return expected("a value >= 0 or r,g,b with each >= 0", v);
+             }
+             return {};
+         }},
+        {"--shadow-eps", "E", kAll, "shadow ray offset in world units, >= 0 (0 shows acne)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float eps = 0.0f;
+             if (!parseFloat(v, eps) || eps < 0.0f) {
+                 return expected("a finite number >= 0", v);
+             }
+             s.out.settings.shadowEpsilon = eps;
+             s.out.given.shadowEpsilon = true;
+             return {};
+         }},
+        {"--no-shadows", nullptr, kAll, "no shadow rays",
+         [](const std::string&, ParseState& s) -> std::string {
+             s.out.settings.shadows = false;
+             return {};
+         }},
+        {"--no-indirect", nullptr, kAll, "no indirect term",
+         [](const std::string&, ParseState& s) -> std::string {
+             s.out.settings.indirect = false;
+             return {};
+         }},
+        {"--spp", "N", kAll, "samples per pixel, 1 = the lab's centred ray (default 1)",
+         settingsIntIn(1, kMaxSamplesPerPixel, &RenderSettings::samplesPerPixel)},
+        {"--threads", "N", kAll, "render threads, 0 = all cores (default 0)",
+         settingsIntIn(0, kMaxThreads, &RenderSettings::threads)},
+        {"--display", "lab|srgb", kAll, "display transform for 8-bit output (default lab)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseDisplayMode(lowerCase(v), s.out.settings.display)) {
+                 return expected("lab or srgb", v);
+             }
+             return {};
+         }},
+        {"--exposure", "EV", kAll, "exposure in stops for --display srgb (default 0)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseFloat(v, s.out.settings.exposure)) {
+                 return expected("a finite number of stops", v);
+             }
+             return {};
+         }},
+        {"--settings", "FILE.json", kAll, "load settings saved with --save-settings (flags win)",
+         nullptr}, // applied before the other options
+        {"--save-settings", "FILE.json", kRender, "save the settings used, as JSON",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (v.empty()) {
+                 return "expected a file name";
+             }
+             s.out.saveSettings = v;
+             return {};
+         }},
+        {"-o", "FILE", kRender,
+         "output image: .png (8-bit, display transform), .pfm or .exr (linear)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!isSupportedImagePath(v)) {
+                 return unsupportedImageReason(v);
+             }
+             s.out.output = v;
+             return {};
+         }},
+        {"--frames", "N", kViewer, "quit after N frames (0 = run until closed)",
+         intIn(0, 1 << 30, &CommandLine::frames)},
+        {"--frames", "N", kBench, "best of N timed frames (default 5)",
+         intIn(1, 1 << 20, &CommandLine::benchFrames)},
+        {"--screenshot", "FILE", kViewer, "save the last shown frame (.png, .pfm or .exr)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!isSupportedImagePath(v)) {
+                 return unsupportedImageReason(v);
+             }
+             s.out.screenshot = v;
+             return {};
+         }},
+        {"--screenshot-dir", "DIR", kViewer, "folder for screenshots taken with a key (default .)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (v.empty()) {
+                 return "expected a folder";
+             }
+             s.out.screenshotDir = v;
+             return {};
+         }},
+        {"--json", nullptr, kBench, "print the results as JSON",
+         [](const std::string&, ParseState& s) -> std::string {
+             s.out.json = true;
+             return {};
+         }},
+        {"--help", nullptr, kAll, "show this help", nullptr},
+    };
+    return table;
+}
+
+const Option* findOption(const std::string& name, Program program) {
+    const std::string canonical = name == "--output" ? "-o" : name;
+    for (const Option& option : options()) {
+        if (canonical == option.name && (option.programs & maskOf(program)) != 0) {
+            return &option;
+        }
+    }
+    return nullptr;
+}
+
+struct Word {
+    const Option* option;
+    std::string name; // as written, for messages
+    std::string value;
+};
+
+void markGivenFromKeys(const SettingsJsonExtras& extras, GivenSettings& given) {
+    auto has = [&](const char* key) { return extras.keys.count(key) != 0; };
+    given.cameraPosition |= has("camera.position");
+    given.cameraYaw |= has("camera.yaw");
+    given.cameraPitch |= has("camera.pitch");
+    given.cameraFov |= has("camera.fov");
+    given.lightPosition |= has("light.position");
+    given.lightColor |= has("light.color");
+    given.lightIntensity |= has("light.intensity");
+    given.shadowEpsilon |= has("shadows.epsilon");
+}
+
+const char* programName(Program program) {
+    switch (program) {
+    case Program::Render: return "raylab-render";
+    case Program::Viewer: return "raylab";
+    case Program::Bench: return "raylab-bench";
+    }
+    return "raylab";
+}
+
+} // namespace
+
+int parseCommandLine(int argc, const char* const* argv, Program program, CommandLine& out,
+                     std::string& error) {
+    CommandLine result;
+    std::vector<std::string> args;
+    for (int i = 1; i < argc; ++i) {
+        args.emplace_back(argv[i] != nullptr ? argv[i] : "");
+    }
+    for (const std::string& arg : args) {
+        if (arg == "--") {
+            break;
+        }
+        if (arg == "--help" || arg == "-h") {
+            result.help = true;
+            out = std::move(result);
+            return 0;
+        }
+    }
+
+    // Pass 1: words to options and values.
+    std::vector<Word> words;
+    std::string settingsFile;
+    bool sceneGiven = false;
+    bool optionsEnded = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (!optionsEnded && arg == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        if (!optionsEnded && arg.size() > 1 && arg[0] == '-') {
+            const std::size_t eq = arg.rfind("--", 0) == 0 ? arg.find('=') : std::string::npos;
+            const std::string name = arg.substr(0, eq);
+            const Option* option = findOption(name, program);
+            if (option == nullptr) {
+                error = "unknown option " + quoted(name) + " (see --help)";
+                return 2;
+            }
+            std::string value;
+            if (option->argument == nullptr) {
+                if (eq != std::string::npos) {
+                    error = "option " + quoted(name) + " takes no value";
+                    return 2;
+                }
+            } else if (eq != std::string::npos) {
+                value = arg.substr(eq + 1);
+            } else if (i + 1 < args.size()) {
+                value = args[++i];
+            } else {
+                error = "option " + quoted(name) + " needs a value (" + option->argument + ")";
+                return 2;
+            }
+            if (std::string(option->name) == "--settings") {
+                if (value.empty()) {
+                    error = "option '--settings' needs a file name";
+                    return 2;
+                }
+                settingsFile = value; // the last one counts
+            } else {
+                words.push_back({option, name, value});
+            }
+            continue;
+        }
+        if (sceneGiven) {
+            error = "unexpected argument " + quoted(arg) + " (one SCENE at most; see --help)";
+            return 2;
+        }
+        if (arg.empty()) {
+            error = "empty SCENE argument";
+            return 2;
+        }
+        result.scene = arg;
+        sceneGiven = true;
+    }
+
+    // The settings file first, whatever its position; the flags then override it.
+    if (!settingsFile.empty()) {
+        SettingsJsonExtras extras;
+        if (!loadSettingsFile(settingsFile, result.settings, extras, error)) {
+            return 1;
+        }
+        markGivenFromKeys(extras, result.given);
+        if (!sceneGiven && !extras.scene.empty()) {
+            result.scene = extras.scene;
+        }
+    }
+
+    // Pass 2: every other option, in order.
+    // Each value is checked where it is given (so the error names the flag), then the whole set
+    // with core validate() after each option, which catches the limits the flags do not repeat.
+    ParseState state{result, program, std::nullopt, false};
+    const bool startedValid = validate(result.settings).empty();
+    for (const Word& word : words) {
+        if (std::string why = word.option->handle(word.value, state); !why.empty()) {
+            error = word.name + ": " + why;
+            return 2;
+        }
+        if (std::string why = validate(result.settings); startedValid && !why.empty()) {
+            error = word.name + ": " + why;
+            return 2;
+        }
+    }
+    if (state.focal && state.fovFlag) {
+        error = "--fov and --focal both set the field of view; give one";
+        return 2;
+    }
+    if (state.focal) {
+        // The focal length is in pixels of the final image height.
+        const float fov = verticalFovFromFocal(*state.focal, result.settings.height);
+        if (!std::isfinite(fov) || fov <= 0.0f || fov >= 180.0f) {
+            error = "--focal: gives no usable field of view for height " +
+                    std::to_string(result.settings.height);
+            return 2;
+        }
+        result.settings.camera.verticalFovDegrees = fov;
+    }
+    if (program == Program::Render && result.output.empty()) {
+        error = "missing output file (-o FILE; see --help)";
+        return 2;
+    }
+    if (std::string why = validate(result.settings); !why.empty()) {
+        error = why;
+        return 2;
+    }
+    result.cameraGiven =
+        result.given.cameraPosition || result.given.cameraYaw || result.given.cameraPitch;
+    result.lightGiven = result.given.lightPosition;
+    result.shadowEpsilonGiven = result.given.shadowEpsilon;
+    out = std::move(result);
+    return 0;
+}
+
+std::string usage(Program program) {
+    std::ostringstream text;
+    text << "usage: " << programName(program) << " [SCENE] [options]";
+    if (program == Program::Render) {
+        text << " -o FILE";
+    }
+    text
+        << "\n\nSCENE is a mesh file (OBJ, PLY, glTF/GLB, or anything Assimp reads) or the built-in"
+           "\n'cornell' (the default). A mesh with no camera or light given is framed.\n"
+           "Values: --flag VALUE or --flag=VALUE. --settings is applied first; flags override it."
+           "\n\noptions:\n";
+    for (const Option& option : options()) {
+        if ((option.programs & maskOf(program)) == 0) {
+            continue;
+        }
+        std::string left = std::string("  ") + option.name;
+        if (option.argument != nullptr) {
+            left += std::string(" ") + option.argument;
+        }
+        left.resize(std::max<std::size_t>(left.size() + 2, 26), ' ');
+        text << left << option.help << "\n";
+    }
+    return text.str();
+}
+
+std::string finishSettings(const Scene& scene, CommandLine& commandLine) {
+    RenderSettings& settings = commandLine.settings;
+    if (commandLine.scene != "cornell") {
+        RenderSettings framed = settings;
+        frameScene(scene, framed);
+        const GivenSettings& given = commandLine.given;
+        if (given.cameraPosition) {
+            framed.camera.position = settings.camera.position;
+        }
+        if (given.cameraYaw) {
+            framed.camera.yawDegrees = settings.camera.yawDegrees;
+        }
+        if (given.cameraPitch) {
+            framed.camera.pitchDegrees = settings.camera.pitchDegrees;
+        }
+        if (given.cameraFov) {
+            framed.camera.verticalFovDegrees = settings.camera.verticalFovDegrees;
+        }
+        if (given.lightPosition) {
+            framed.light.position = settings.light.position;
+        }
+        if (given.lightColor) {
+            framed.light.color = settings.light.color;
+        }
+        if (given.lightIntensity) {
+            framed.light.intensity = settings.light.intensity;
+        }
+        if (given.shadowEpsilon) {
+            framed.shadowEpsilon = settings.shadowEpsilon;
+        }
+        settings = framed;
+    }
+    if (commandLine.lookAt) {
+        lookAt(settings.camera, *commandLine.lookAt);
+    }
+    return validate(settings);
+}
+
+} // namespace raylab

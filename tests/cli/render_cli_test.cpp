@@ -1,0 +1,279 @@
+// raylab-render as a user runs it: each bad input gives its exit code, exactly one line on stderr
+// and no file; good runs give images that read back as the core renders them.
+
+#include "core/bvh.h"
+#include "core/cornell_box.h"
+#include "core/renderer.h"
+#include "io/image_io.h"
+#include "temp_dir_test.h"
+#include "test_assets.h"
+
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
+#include <random>
+#include <spawn.h>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+extern char** environ;
+
+namespace raylab {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+    int errLines() const {
+        int n = 0;
+        for (const char c : err) {
+            n += c == '\n' ? 1 : 0;
+        }
+        return n;
+    }
+};
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class RenderCli : public test::TempDirTest {
+protected:
+    // Runs raylab-render with args (in the test folder), stdout and stderr captured.
+    Outcome run(const std::vector<std::string>& args) const {
+        const std::string outFile =
+            (dir_.parent_path() / (dir_.filename().string() + ".out")).string();
+        const std::string errFile =
+            (dir_.parent_path() / (dir_.filename().string() + ".err")).string();
+        std::vector<std::string> all = {RAYLAB_RENDER_EXE};
+        all.insert(all.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (std::string& a : all) {
+            argv.push_back(a.data());
+        }
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, outFile.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errFile.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        Outcome result;
+        pid_t pid = 0;
+        const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+        posix_spawn_file_actions_destroy(&actions);
+        EXPECT_EQ(spawned, 0) << std::strerror(spawned);
+        if (spawned != 0) {
+            return result;
+        }
+        int status = 0;
+        waitpid(pid, &status, 0);
+        result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        result.out = slurp(outFile);
+        result.err = slurp(errFile);
+        fs::remove(outFile);
+        fs::remove(errFile);
+        return result;
+    }
+
+    // A bad run: the exit code, exactly one stderr line starting with the program's name, nothing
+    // on stdout, and no file created in the test folder (beyond `keep`).
+    void expectFailure(const std::vector<std::string>& args, int code,
+                       const std::string& mustContain, const std::vector<std::string>& keep = {}) {
+        const Outcome r = run(args);
+        SCOPED_TRACE(r.err);
+        EXPECT_EQ(r.exitCode, code);
+        EXPECT_EQ(r.errLines(), 1);
+        EXPECT_EQ(r.err.rfind("raylab-render: ", 0), 0u);
+        EXPECT_NE(r.err.find(mustContain), std::string::npos);
+        EXPECT_EQ(r.out, "");
+        EXPECT_EQ(files(), keep);
+    }
+};
+
+TEST_F(RenderCli, UsageErrorsExit2) {
+    const std::string out = path("out.png");
+    expectFailure({"--foo", "-o", out}, 2, "raylab-render: unknown option '--foo' (see --help)\n");
+    expectFailure({"--fov", "nan", "-o", out}, 2, "--fov");
+    expectFailure({"--light-power", "-2", "-o", out}, 2, "--light-power");
+    expectFailure({"--width", "0", "-o", out}, 2, "--width");
+    expectFailure({"--height", "16385", "-o", out}, 2, "--height");
+    expectFailure({"--width=100000", "-o", out}, 2, "--width");
+    expectFailure({"--spp", "1.5", "-o", out}, 2, "--spp");
+    expectFailure({"-o", path("out.jpg")}, 2, ".jpg");
+    expectFailure({"-o", path("noext")}, 2, "extension");
+    expectFailure({}, 2, "-o FILE");
+    expectFailure({"a.obj", "b.obj", "-o", out}, 2, "b.obj");
+}
+
+TEST_F(RenderCli, OtherErrorsExit1) {
+    const std::string out = path("out.png");
+    expectFailure({path("missing.obj"), "-o", out}, 1, "missing.obj");
+    expectFailure({"--settings", path("missing.json"), "-o", out}, 1, "missing.json");
+
+    // Garbage and truncated meshes (the truncated PLY trips an assertion inside Assimp).
+    std::mt19937 rng(3);
+    std::string garbage(2000, '\0');
+    for (char& c : garbage) {
+        c = static_cast<char>(rng());
+    }
+    std::ofstream(path("garbage.ply"), std::ios::binary) << garbage;
+    expectFailure({path("garbage.ply"), "-o", out}, 1, "garbage.ply", {"garbage.ply"});
+    fs::remove(path("garbage.ply"));
+    std::ofstream(path("cut.ply"), std::ios::binary)
+        << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+           "end_header\n0 0 0\n1 0 0\n";
+    expectFailure({path("cut.ply"), "-o", out}, 1, "cut.ply", {"cut.ply"});
+    fs::remove(path("cut.ply"));
+    std::ofstream(path("empty.obj")) << "";
+    expectFailure({path("empty.obj"), "-o", out}, 1, "empty", {"empty.obj"});
+    fs::remove(path("empty.obj"));
+
+    std::ofstream(path("bad.json")) << R"({"light": {"intensity": "lots"}})";
+    expectFailure({"--settings", path("bad.json"), "-o", out}, 1, "light.intensity", {"bad.json"});
+}
+
+TEST_F(RenderCli, UnwritableOutputFailsBeforeRendering) {
+    // We may be root, so permissions do not stop us: use places nobody can create files in.
+    for (const std::string& target :
+         {path("no/such/dir/out.png"), std::string("/proc/raylab-test.png"),
+          std::string("/sys/raylab-test.pfm"), std::string("/proc/raylab-test.exr")}) {
+        expectFailure({"--width", "16384", "--height", "16384", "-o", target}, 1, target);
+        EXPECT_FALSE(fs::exists(target));
+    }
+    fs::create_directory(path("dir.png"));
+    expectFailure({"-o", path("dir.png")}, 1, "dir.png", {"dir.png"});
+    expectFailure({"--save-settings", path("no/dir/s.json"), "-o", path("out.png")}, 1, "s.json",
+                  {"dir.png"});
+}
+
+TEST_F(RenderCli, HelpGoesToStdout) {
+    const Outcome r = run({"--help"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err, "");
+    EXPECT_NE(r.out.find("--light-power"), std::string::npos);
+    EXPECT_NE(r.out.find("-o FILE"), std::string::npos);
+}
+
+TEST_F(RenderCli, PngOfTheBoxReadsBackWithTheWallColours) {
+    const Outcome r = run({"--width", "100", "--height", "100", "-o", path("box.png")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // One summary line: size, triangles, time, rays per second, output.
+    EXPECT_EQ(r.errLines(), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("raylab-render: 100x100, 1 spp, 30 triangles, BVH ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(" Mrays/s -> " + path("box.png")), std::string::npos) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"box.png"});
+
+    Rgba8Image image;
+    std::map<std::string, std::string> text;
+    std::string error;
+    ASSERT_TRUE(readPng(path("box.png"), image, error, &text)) << error;
+    ASSERT_EQ(image.width, 100);
+    ASSERT_EQ(image.height, 100);
+    auto pixel = [&](int x, int y) {
+        const std::size_t i = (static_cast<std::size_t>(y) * 100 + x) * 4;
+        return glm::ivec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
+    };
+    // Centre, a little above the blocks: the back wall, white-ish grey, lit.
+    const glm::ivec3 back = pixel(50, 35);
+    EXPECT_GT(back.x, 100);
+    EXPECT_LE(std::abs(back.x - back.y), 3);
+    EXPECT_LE(std::abs(back.x - back.z), 3);
+    // Left wall purple (red and blue, little green); right wall yellow; floor green; ceiling cyan.
+    const glm::ivec3 left = pixel(3, 50);
+    EXPECT_GT(left.x, 2 * left.y);
+    EXPECT_GT(left.z, 2 * left.y);
+    const glm::ivec3 right = pixel(96, 50);
+    EXPECT_GT(right.x, 2 * right.z);
+    EXPECT_GT(right.y, 2 * right.z);
+    const glm::ivec3 floor = pixel(50, 98);
+    EXPECT_GT(floor.y, 2 * floor.x);
+    EXPECT_GT(floor.y, 2 * floor.z);
+    const glm::ivec3 ceiling = pixel(20, 3); // off the over-exposed spot above the light
+    EXPECT_GT(ceiling.y, 2 * ceiling.x);
+    EXPECT_GT(ceiling.z, 2 * ceiling.x);
+    // The settings travel in a text chunk.
+    EXPECT_NE(text["raylab settings"].find("\"width\": 100"), std::string::npos);
+}
+
+TEST_F(RenderCli, PfmOfTheDefaultBoxEqualsCoreRender) {
+    const Outcome r = run({"-o", path("box.pfm"), "--threads", "2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Framebuffer file;
+    std::string error;
+    ASSERT_TRUE(readPfm(path("box.pfm"), file, error)) << error;
+
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    const Framebuffer expected = render(scene, bvh, RenderSettings{});
+    ASSERT_EQ(file.width, expected.width);
+    ASSERT_EQ(file.height, expected.height);
+    EXPECT_EQ(std::memcmp(file.pixels.data(), expected.pixels.data(), expected.pixels.size() * 12),
+              0);
+}
+
+TEST_F(RenderCli, SavedSettingsReproduceTheSameBytes) {
+    const Outcome first =
+        run({"--width",    "96",         "--height",     "64",    "--camera-pos",    "0.1,0.2,-2.9",
+             "--yaw",      "3.3",        "--pitch",      "-1.7",  "--light-power",   "11,9,7",
+             "--indirect", "0.3",        "--shadow-eps", "0.002", "--spp",           "2",
+             "--display",  "srgb",       "--exposure",   "0.7",   "--save-settings", path("s.json"),
+             "-o",         path("a.png")});
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    const Outcome second = run({"--settings", path("s.json"), "-o", path("b.png")});
+    ASSERT_EQ(second.exitCode, 0) << second.err;
+    const std::string a = slurp(path("a.png"));
+    const std::string b = slurp(path("b.png"));
+    ASSERT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
+    // And a different setting gives different bytes (the comparison can fail).
+    const Outcome third =
+        run({"--settings", path("s.json"), "--exposure", "0.8", "-o", path("c.png")});
+    ASSERT_EQ(third.exitCode, 0) << third.err;
+    EXPECT_NE(a, slurp(path("c.png")));
+}
+
+TEST_F(RenderCli, MeshScenesAreFramedAndWarningsPrinted) {
+    std::ofstream(path("m.obj")) << "v 10 0 0\nv 12 0 0\nv 10 2 0\nv 0 0 0\nv nan 0 0\n"
+                                    "f 1 2 3\nf 1 2 4\nf 1 2 5\n";
+    const Outcome r = run({path("m.obj"), "--width", "40", "--height", "40", "-o", path("m.pfm")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("skipped 1 non-finite triangle"), std::string::npos) << r.err;
+    Framebuffer image;
+    std::string error;
+    ASSERT_TRUE(readPfm(path("m.pfm"), image, error)) << error;
+    // Framed: the middle of the picture sees the mesh (lit, non-zero).
+    int lit = 0;
+    for (const glm::vec3& p : image.pixels) {
+        lit += p.x > 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(lit, 40 * 40 / 20);
+}
+
+TEST_F(RenderCli, SharedAssetRenders) {
+    const fs::path bunny = test::asset("bunny/bun_zipper_res2.ply");
+    if (bunny.empty()) {
+        GTEST_SKIP() << "shared assets not found";
+    }
+    const Outcome r = run({bunny.string(), "--width", "64", "--height", "64", "-o", path("b.exr")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("16301 triangles"), std::string::npos) << r.err;
+    Framebuffer image;
+    std::string error;
+    ASSERT_TRUE(readExr(path("b.exr"), image, error)) << error;
+    EXPECT_GT(image.at(32, 32).x, 0.0f); // the bunny fills the middle
+}
+
+} // namespace
+} // namespace raylab
