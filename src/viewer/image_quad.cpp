@@ -1,0 +1,163 @@
+#include "image_quad.h"
+
+#include "quad_shaders.h"
+
+#include <algorithm>
+#include <chrono>
+#include <glad/gl.h>
+#include <utility>
+
+namespace raylab::viewer {
+
+namespace {
+
+// Compiles one shader stage; 0 with a one-line error on failure.
+GLuint compileShader(GLenum stage, const char* source, std::string& error) {
+    const GLuint shader = glCreateShader(stage);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[1024] = {};
+        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+        error = std::string(stage == GL_VERTEX_SHADER ? "quad.vert" : "quad.frag") +
+                " does not compile: " + log;
+        std::replace(error.begin(), error.end(), '\n', ' ');
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+} // namespace
+
+ImageQuad::~ImageQuad() {
+    if (texture_ != 0) {
+        glDeleteTextures(1, &texture_);
+    }
+    if (vertexArray_ != 0) {
+        glDeleteVertexArrays(1, &vertexArray_);
+    }
+    if (program_ != 0) {
+        glDeleteProgram(program_);
+    }
+}
+
+bool ImageQuad::create(std::string& error) {
+    const GLuint vertex = compileShader(GL_VERTEX_SHADER, kQuadVertexShader, error);
+    if (vertex == 0) {
+        return false;
+    }
+    const GLuint fragment = compileShader(GL_FRAGMENT_SHADER, kQuadFragmentShader, error);
+    if (fragment == 0) {
+        glDeleteShader(vertex);
+        return false;
+    }
+    program_ = glCreateProgram();
+    glAttachShader(program_, vertex);
+    glAttachShader(program_, fragment);
+    glLinkProgram(program_);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[1024] = {};
+        glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+        error = std::string("the quad's shaders do not link: ") + log;
+        std::replace(error.begin(), error.end(), '\n', ' ');
+        return false;
+    }
+    viewportSizeLocation_ = glGetUniformLocation(program_, "uViewportSize");
+    imageLocation_ = glGetUniformLocation(program_, "uImage");
+
+    glGenVertexArrays(1, &vertexArray_); // core profile: drawing needs a bound vertex array
+    glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return true;
+}
+
+void ImageQuad::upload(const Rgba8Image& image) {
+    if (image.width <= 0 || image.height <= 0) {
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    if (image.width != width_ || image.height != height_) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, nullptr);
+        width_ = image.width;
+        height_ = image.height;
+    }
+    // Image row 0 goes to texture row 0; the fragment shader shows texture row 0 at the top.
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                    image.pixels.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    uploadSeconds_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ImageQuad::draw(int framebufferWidth, int framebufferHeight) const {
+    if (!hasImage() || framebufferWidth <= 0 || framebufferHeight <= 0) {
+        return;
+    }
+    glViewport(0, 0, framebufferWidth, framebufferHeight);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program_);
+    glUniform2i(viewportSizeLocation_, framebufferWidth, framebufferHeight);
+    glUniform1i(imageLocation_, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glBindVertexArray(vertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(0);
+}
+
+Rgba8Image readFramebuffer(int framebufferWidth, int framebufferHeight) {
+    Rgba8Image out;
+    if (framebufferWidth <= 0 || framebufferHeight <= 0) {
+        return out;
+    }
+    out.width = framebufferWidth;
+    out.height = framebufferHeight;
+    const std::size_t row = 4 * static_cast<std::size_t>(framebufferWidth);
+    std::vector<uint8_t> bottomUp(row * static_cast<std::size_t>(framebufferHeight));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glReadPixels(0, 0, framebufferWidth, framebufferHeight, GL_RGBA, GL_UNSIGNED_BYTE,
+                 bottomUp.data());
+    // GL's row 0 is the bottom of the framebuffer; images start at the top.
+    out.pixels.resize(bottomUp.size());
+    for (int y = 0; y < framebufferHeight; ++y) {
+        const auto from =
+            bottomUp.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y));
+        std::copy_n(from, row,
+                    out.pixels.begin() +
+                        static_cast<std::ptrdiff_t>(
+                            row * static_cast<std::size_t>(framebufferHeight - 1 - y)));
+    }
+    for (std::size_t i = 3; i < out.pixels.size(); i += 4) {
+        out.pixels[i] = 255; // the window has no meaningful alpha
+    }
+    return out;
+}
+
+} // namespace raylab::viewer

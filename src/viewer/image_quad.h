@@ -1,0 +1,50 @@
+#pragma once
+// The CPU image on screen: an RGBA8 texture drawn on a fullscreen quad with nearest filtering and
+// an exact texel-to-pixel mapping (shaders/quad.frag), row 0 of the image at the top.
+// Needs a current OpenGL 3.3 core context (glad loaded) for its whole life.
+
+#include "io/image_io.h"
+
+#include <cstdint>
+#include <string>
+
+namespace raylab::viewer {
+
+class ImageQuad {
+public:
+    ImageQuad() = default;
+    ImageQuad(const ImageQuad&) = delete;
+    ImageQuad& operator=(const ImageQuad&) = delete;
+    ~ImageQuad();
+
+    // Compiles the shaders and creates the texture and vertex array. Returns false with a
+    // one-line error.
+    bool create(std::string& error);
+
+    // Uploads the image with glTexSubImage2D; the texture is reallocated only when the size
+    // changed. An empty image is ignored.
+    void upload(const Rgba8Image& image);
+    bool hasImage() const { return width_ > 0 && height_ > 0; }
+
+    // Draws the image over the whole viewport (0, 0, framebufferWidth, framebufferHeight).
+    void draw(int framebufferWidth, int framebufferHeight) const;
+
+    // Seconds the last upload took (CPU side, including the driver's copy).
+    double lastUploadSeconds() const { return uploadSeconds_; }
+
+private:
+    unsigned program_ = 0;
+    unsigned vertexArray_ = 0;
+    unsigned texture_ = 0;
+    int viewportSizeLocation_ = -1;
+    int imageLocation_ = -1;
+    int width_ = 0;
+    int height_ = 0;
+    double uploadSeconds_ = 0.0;
+};
+
+// Reads the current framebuffer's colour (what was drawn so far this frame) into an RGBA image,
+// rows from the top.
+Rgba8Image readFramebuffer(int framebufferWidth, int framebufferHeight);
+
+} // namespace raylab::viewer

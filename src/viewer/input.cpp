@@ -1,0 +1,103 @@
+#include "input.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace raylab::viewer {
+
+namespace {
+
+InputCollector* collectorOf(GLFWwindow* window) {
+    return static_cast<InputCollector*>(glfwGetWindowUserPointer(window));
+}
+
+// The cursor in framebuffer pixels (screen coordinates scaled on high-DPI screens).
+void cursorInPixels(GLFWwindow* window, double& x, double& y) {
+    int windowWidth = 0, windowHeight = 0, pixelWidth = 0, pixelHeight = 0;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    glfwGetFramebufferSize(window, &pixelWidth, &pixelHeight);
+    glfwGetCursorPos(window, &x, &y);
+    if (windowWidth > 0 && windowHeight > 0) {
+        x *= static_cast<double>(pixelWidth) / windowWidth;
+        y *= static_cast<double>(pixelHeight) / windowHeight;
+    }
+}
+
+} // namespace
+
+void InputCollector::attach(GLFWwindow* window) {
+    glfwSetWindowUserPointer(window, this);
+    glfwSetKeyCallback(window, &InputCollector::onKey);
+    glfwSetScrollCallback(window, &InputCollector::onScroll);
+    glfwSetMouseButtonCallback(window, &InputCollector::onMouseButton);
+}
+
+InputEvents InputCollector::take() {
+    InputEvents out = std::move(events_);
+    events_ = {};
+    return out;
+}
+
+void InputCollector::onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+        collectorOf(window)->events_.keys.push_back(key);
+    }
+}
+
+void InputCollector::onScroll(GLFWwindow* window, double, double dy) {
+    collectorOf(window)->events_.scroll += dy;
+}
+
+void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, int) {
+    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) {
+        collectorOf(window)->events_.leftPressed = true;
+    }
+}
+
+std::optional<NavAction> navActionForKey(int glfwKey) {
+    switch (glfwKey) {
+    case GLFW_KEY_UP: return NavAction::CameraForward;
+    case GLFW_KEY_DOWN: return NavAction::CameraBack;
+    case GLFW_KEY_LEFT: return NavAction::TurnLeft;
+    case GLFW_KEY_RIGHT: return NavAction::TurnRight;
+    case GLFW_KEY_W: return NavAction::LightForward;
+    case GLFW_KEY_S: return NavAction::LightBack;
+    case GLFW_KEY_A: return NavAction::LightLeft;
+    case GLFW_KEY_D: return NavAction::LightRight;
+    case GLFW_KEY_Q: return NavAction::LightDown;
+    case GLFW_KEY_E: return NavAction::LightUp;
+    default: return std::nullopt;
+    }
+}
+
+std::optional<Command> commandForKey(int glfwKey) {
+    switch (glfwKey) {
+    case GLFW_KEY_F12: return Command::Screenshot;
+    case GLFW_KEY_ESCAPE: return Command::Quit;
+    case GLFW_KEY_F1: return Command::TogglePanel;
+    default: return std::nullopt;
+    }
+}
+
+void MouseDrag::update(GLFWwindow* window, bool start, float degreesPerPixel, float& yaw,
+                       float& pitch) {
+    yaw = 0.0f;
+    pitch = 0.0f;
+    if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS && !start) {
+        dragging_ = false;
+        return;
+    }
+    double x = 0.0, y = 0.0;
+    cursorInPixels(window, x, y);
+    if (start) {
+        dragging_ = true;
+    } else if (dragging_) {
+        // Grab the view: moving the cursor right turns the camera left (yaw up); down looks up.
+        yaw = static_cast<float>(x - lastX_) * degreesPerPixel;
+        pitch = static_cast<float>(y - lastY_) * degreesPerPixel;
+    }
+    lastX_ = x;
+    lastY_ = y;
+}
+
+} // namespace raylab::viewer

@@ -1,0 +1,57 @@
+#pragma once
+// Keyboard and mouse events of the window, collected by GLFW callbacks between two frames and
+// handed to the frame in one piece. Key presses are queued as events (not polled), so a press and
+// release within one frame (as xdotool sends them) is never lost.
+
+#include "navigation.h"
+
+#include <optional>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace raylab::viewer {
+
+enum class Command { Screenshot, Quit, TogglePanel };
+
+struct InputEvents {
+    std::vector<int> keys;    // GLFW key codes of presses and repeats, in order
+    double scroll = 0.0;      // wheel notches, positive = away from the user
+    bool leftPressed = false; // the left button went down
+};
+
+class InputCollector {
+public:
+    // Installs the collector's key, scroll and mouse-button callbacks and makes it the window's
+    // user pointer. Call before ImGui installs its callbacks (they chain to these). The collector
+    // must outlive the window's event processing.
+    void attach(GLFWwindow* window);
+    // The events since the last call.
+    InputEvents take();
+
+private:
+    static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+    static void onScroll(GLFWwindow* window, double dx, double dy);
+    static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+    InputEvents events_;
+};
+
+// The lab's keys; empty for keys that do not navigate.
+std::optional<NavAction> navActionForKey(int glfwKey);
+// F12: screenshot, Escape: quit, F1: show or hide the panel.
+std::optional<Command> commandForKey(int glfwKey);
+
+// The mouse drag that turns the camera: while the left button, pressed outside the panel, is
+// held, the point under the cursor follows the cursor (a drag to the right turns the camera left).
+class MouseDrag {
+public:
+    // Returns the yaw and pitch (degrees) to apply this frame. `start` is whether a press
+    // outside the panel happened this frame; `degreesPerPixel` = vertical fov / framebuffer height.
+    void update(GLFWwindow* window, bool start, float degreesPerPixel, float& yaw, float& pitch);
+
+private:
+    bool dragging_ = false;
+    double lastX_ = 0.0, lastY_ = 0.0; // framebuffer pixels
+};
+
+} // namespace raylab::viewer

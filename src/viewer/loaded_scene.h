@@ -1,0 +1,30 @@
+#pragma once
+// A scene ready to render: its triangles and their BVH, built once and shared read-only between
+// the UI thread and the render thread (the render thread keeps it alive while a pass runs).
+
+#include "core/bvh.h"
+#include "core/scene.h"
+
+#include <memory>
+#include <string>
+
+namespace raylab::viewer {
+
+struct LoadedScene {
+    std::string source; // "cornell" or the mesh path, as given
+    Scene scene;
+    Bvh bvh;
+};
+
+struct SceneLoadResult {
+    std::shared_ptr<const LoadedScene> scene; // null when loading failed
+    std::string error;                        // one line when scene is null
+    std::string warnings;                     // the loader's skipped-element lines; may be empty
+    double seconds = 0.0;                     // load and BVH build, wall clock
+};
+
+// Loads `source` ("cornell" or a mesh file) and builds its BVH. Blocks; never throws for a bad
+// file (the error is in the result).
+SceneLoadResult loadSceneForViewer(const std::string& source);
+
+} // namespace raylab::viewer

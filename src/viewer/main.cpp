@@ -1,0 +1,39 @@
+// raylab: the interactive viewer. Parses the command line, loads the scene (a bad one ends here
+// with one line and exit code 1), and runs the window (viewer_app.h).
+
+#include "loaded_scene.h"
+#include "viewer_app.h"
+#include "viewer_options.h"
+
+#include <cstdio>
+#include <string>
+
+int main(int argc, char** argv) {
+    using namespace raylab;
+    using namespace raylab::viewer;
+    ViewerOptions options;
+    std::string error;
+    if (const int status = parseViewerOptions(argc, argv, options, error); status != 0) {
+        std::fprintf(stderr, "raylab: %s\n", error.c_str());
+        return status;
+    }
+    CommandLine& command = options.command;
+    if (command.help) {
+        std::fputs(viewerUsage().c_str(), stdout);
+        return 0;
+    }
+    SceneLoadResult loaded = loadSceneForViewer(command.scene);
+    if (!loaded.scene) {
+        std::fprintf(stderr, "raylab: %s\n", loaded.error.c_str());
+        return 1;
+    }
+    if (!loaded.warnings.empty()) {
+        std::fprintf(stderr, "raylab: %s\n", loaded.warnings.c_str());
+    }
+    // A mesh is framed except for what the command line gave, as raylab-render does.
+    if (const std::string why = finishSettings(loaded.scene->scene, command); !why.empty()) {
+        std::fprintf(stderr, "raylab: %s\n", why.c_str());
+        return 2;
+    }
+    return runViewer(options, loaded.scene);
+}

@@ -1,0 +1,237 @@
+#include "panel.h"
+
+#include "core/camera.h"
+#include "render_worker.h"
+#include "settings_edit.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <thread>
+
+namespace raylab::viewer {
+
+namespace {
+
+const ImVec4 kRed(1.0f, 0.45f, 0.4f, 1.0f);
+const ImVec4 kGreen(0.55f, 0.9f, 0.55f, 1.0f);
+
+// A colour swatch that opens a picker; components stay in [0, 1].
+bool colourButton(const char* id, glm::vec3& colour) {
+    return ImGui::ColorEdit3(id, &colour.x,
+                             ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel |
+                                 ImGuiColorEditFlags_Float);
+}
+
+// Two widgets on one row: each gets half of the item width.
+float halfWidth() { return 0.5f * (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x); }
+
+void lightSection(RenderSettings& edit, const PanelView& view) {
+    if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    ImGui::DragFloat3("position##light", &edit.light.position.x, 0.1f * view.step, 0.0f, 0.0f,
+                      "%.3f");
+    colourButton("##light colour", edit.light.color);
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() -
+                            ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::DragFloat("power (W)", &edit.light.intensity,
+                     0.01f * std::max(edit.light.intensity, 1.0f), 0.0f, FLT_MAX, "%.3f",
+                     ImGuiSliderFlags_AlwaysClamp);
+}
+
+void indirectAndShadowSection(RenderSettings& edit, const PanelView& view) {
+    if (!ImGui::CollapsingHeader("Indirect light and shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
+    ImGui::Checkbox("##indirect on", &edit.indirect);
+    ImGui::SameLine(0.0f, inner);
+    ImGui::BeginDisabled(!edit.indirect);
+    colourButton("##indirect colour", edit.indirectColor);
+    ImGui::SameLine(0.0f, inner);
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - 2.0f * (ImGui::GetFrameHeight() + inner));
+    ImGui::DragFloat("indirect", &edit.indirectIntensity, 0.005f, 0.0f, FLT_MAX, "%.3f",
+                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::EndDisabled();
+
+    ImGui::Checkbox("##shadows on", &edit.shadows);
+    ImGui::SameLine(0.0f, inner);
+    ImGui::BeginDisabled(!edit.shadows);
+    // Logarithmic over six decades; the leftmost position is exactly 0 (the lab's acne).
+    float t = sliderFromEpsilon(edit.shadowEpsilon, view.maxEpsilon);
+    char shown[32];
+    if (edit.shadowEpsilon > 0.0f) {
+        std::snprintf(shown, sizeof shown, "%.2e", static_cast<double>(edit.shadowEpsilon));
+    } else {
+        std::snprintf(shown, sizeof shown, "0 (acne)");
+    }
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - inner);
+    if (ImGui::SliderFloat("shadow eps", &t, 0.0f, 1.0f, shown, ImGuiSliderFlags_NoInput)) {
+        edit.shadowEpsilon = epsilonFromSlider(t, view.maxEpsilon);
+    }
+    ImGui::InputFloat("eps (type)", &edit.shadowEpsilon, 0.0f, 0.0f, "%.3e");
+    ImGui::EndDisabled();
+}
+
+void cameraSection(RenderSettings& edit, const PanelView& view, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
+    ImGui::DragFloat3("position##camera", &edit.camera.position.x, 0.1f * view.step, 0.0f, 0.0f,
+                      "%.3f");
+    const float half = halfWidth();
+    ImGui::SetNextItemWidth(half);
+    ImGui::DragFloat("##yaw", &edit.camera.yawDegrees, 0.25f, -180.0f, 180.0f, "yaw %.2f",
+                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SameLine(0.0f, inner);
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderFloat("yaw, pitch", &edit.camera.pitchDegrees, -89.0f, 89.0f, "pitch %.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderFloat("##fov", &edit.camera.verticalFovDegrees, 1.0f, 179.0f, "%.2f deg");
+    ImGui::SameLine(0.0f, inner);
+    ImGui::Text("f = %.1f px", static_cast<double>(
+                                   focalLengthPixels(edit.camera.verticalFovDegrees, edit.height)));
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("vertical field of view and the focal length it gives at the render "
+                          "height of %d px",
+                          edit.height);
+    }
+    if (ImGui::Button("Frame the scene")) {
+        actions.frameScene = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Reset to the lab's defaults")) {
+        actions.resetToLab = true;
+    }
+}
+
+void displaySection(RenderSettings& edit, PanelState& state) {
+    if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
+    const float half = halfWidth();
+    int mode = edit.display == DisplayMode::Lab ? 0 : 1;
+    ImGui::SetNextItemWidth(half);
+    if (ImGui::Combo("##display", &mode, "lab clamp\0sRGB\0")) {
+        edit.display = mode == 0 ? DisplayMode::Lab : DisplayMode::Srgb;
+    }
+    ImGui::SameLine(0.0f, inner);
+    ImGui::BeginDisabled(edit.display != DisplayMode::Srgb);
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderFloat("display, EV", &edit.exposure, -10.0f, 10.0f, "%.2f EV",
+                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::EndDisabled();
+    ImGui::SliderFloat("resolution", &state.resolutionScale, 0.1f, 1.0f, "x %.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderInt("##cap", &edit.samplesPerPixel, 1, 4096, "cap %d",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SameLine(0.0f, inner);
+    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderInt("samples, threads", &edit.threads, 0, hardware,
+                     edit.threads == 0 ? "all threads" : "%d threads",
+                     ImGuiSliderFlags_AlwaysClamp);
+}
+
+void statisticsSection(const PanelView& view) {
+    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const float frameMs = view.frameMs ? view.frameMs->mean() : 0.0f;
+    ImGui::Text("window %.1f ms/frame, %.0f fps; upload %.2f ms", static_cast<double>(frameMs),
+                frameMs > 0.0f ? 1000.0 / static_cast<double>(frameMs) : 0.0, view.uploadMs);
+    if (view.shown != nullptr && view.shown->image.width > 0) {
+        const ShownImage& s = *view.shown;
+        ImGui::Text("%d x %d, %d samples%s, %zu triangles", s.image.width, s.image.height,
+                    s.preview ? 0 : s.settings.samplesPerPixel,
+                    s.preview ? " (preview)" : (s.final ? " (cap)" : ""), view.triangles);
+        ImGui::Text("pass %.1f ms, %.2f Mrays/s", s.passSeconds * 1000.0, s.raysPerSecond * 1e-6);
+    }
+    const float half = halfWidth();
+    if (view.passMs != nullptr) {
+        ImGui::PlotLines("##pass", view.passMs->data(), view.passMs->size(), view.passMs->offset(),
+                         "pass ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
+    }
+    if (view.frameMs != nullptr) {
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::PlotLines("##frame", view.frameMs->data(), view.frameMs->size(),
+                         view.frameMs->offset(), "frame ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextUnformatted("times");
+    }
+}
+
+void sceneSection(PanelState& state, const PanelView& view, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    ImGui::TextWrapped("%s", view.sceneName.c_str());
+    const bool enter =
+        ImGui::InputText("##path", &state.scenePath, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(view.loading);
+    if (ImGui::Button(view.loading ? "Loading..." : "Open") || (enter && !view.loading)) {
+        actions.openScene = true;
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("a mesh file (OBJ, PLY, glTF, ...) or cornell");
+    }
+}
+
+} // namespace
+
+PanelActions drawPanel(PanelState& state, const PanelView& view) {
+    PanelActions actions;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(kPanelX, kPanelY), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(kPanelWidth, 0.0f),
+        ImVec2(kPanelWidth, std::max(60.0f, io.DisplaySize.y - 2.0f * kPanelY)));
+    ImGui::Begin("raylab", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    ImGui::PushItemWidth(-110.0f); // room for the labels
+
+    // First, so its place is fixed: scripts click it at (kPanelX + 100, kPanelY + 36).
+    if (ImGui::Button("Save screenshot (F12)", ImVec2(-1.0f, 0.0f))) {
+        actions.screenshot = true;
+    }
+    if (!state.status.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, state.statusIsError ? kRed : kGreen);
+        ImGui::TextWrapped("%s", state.status.c_str());
+        ImGui::PopStyleColor();
+    }
+
+    statisticsSection(view);
+    RenderSettings edit = state.settings;
+    lightSection(edit, view);
+    indirectAndShadowSection(edit, view);
+    cameraSection(edit, view, actions);
+    displaySection(edit, state);
+    if (!sameJob(RenderJob{nullptr, edit}, RenderJob{nullptr, state.settings})) {
+        std::string why;
+        if (acceptEdit(edit, state.settings, why)) {
+            state.refused.clear();
+        } else {
+            state.refused = why;
+        }
+    }
+    if (!state.refused.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+        ImGui::TextWrapped("refused: %s", state.refused.c_str());
+        ImGui::PopStyleColor();
+    }
+    sceneSection(state, view, actions);
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return actions;
+}
+
+} // namespace raylab::viewer

@@ -1,0 +1,52 @@
+#pragma once
+// The Dear ImGui panel: light, indirect term and shadows, camera, display, statistics and scene.
+// It sits at a fixed place (kPanelX, kPanelY), with the screenshot button first, so scripts can
+// click it. Widgets edit a copy of the settings that is accepted only when valid (settings_edit.h).
+
+#include "core/render_settings.h"
+#include "history.h"
+#include "shown_image.h"
+
+#include <cstddef>
+#include <string>
+
+namespace raylab::viewer {
+
+inline constexpr float kPanelX = 8.0f; // screen coordinates of the panel's top-left corner
+inline constexpr float kPanelY = 8.0f;
+inline constexpr float kPanelWidth = 340.0f;
+
+// What the panel edits.
+struct PanelState {
+    RenderSettings settings;      // the current settings, always valid
+    float resolutionScale = 1.0f; // render resolution = framebuffer size * this, in [0.1, 1]
+    std::string scenePath;        // the path field
+    std::string refused;          // why the last edit was refused; empty when it was not
+    std::string status;           // the last screenshot or scene-load message
+    bool statusIsError = false;
+};
+
+// What the panel shows but does not edit.
+struct PanelView {
+    const ShownImage* shown = nullptr; // the picture on screen (may be empty)
+    std::string sceneName;
+    std::size_t triangles = 0;
+    bool loading = false;             // a scene is being loaded in the background
+    float step = 0.1f;                // navigationStep of the scene: drag speeds
+    float maxEpsilon = 0.1f;          // the right end of the epsilon slider
+    const History* frameMs = nullptr; // UI frame times
+    const History* passMs = nullptr;  // render pass times
+    double uploadMs = 0.0;
+};
+
+struct PanelActions {
+    bool screenshot = false;
+    bool frameScene = false;
+    bool resetToLab = false;
+    bool openScene = false; // load PanelState::scenePath
+};
+
+// Draws the panel for this ImGui frame.
+PanelActions drawPanel(PanelState& state, const PanelView& view);
+
+} // namespace raylab::viewer

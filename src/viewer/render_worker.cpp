@@ -1,0 +1,255 @@
+#include "render_worker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
+#include "core/display_transform.h"
+#include "core/renderer.h"
+
+namespace raylab::viewer {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::size_t pixelCount(const RenderSettings& s) {
+    return static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height);
+}
+
+// The resolution divisor of a preview for a pass expected to take `expectedSeconds`: 1 (no
+// preview) when it fits the budget, else k in [2, 16] so that the preview (k*k times fewer
+// pixels) about fits.
+int previewDivisor(double expectedSeconds, double budgetSeconds) {
+    if (!(expectedSeconds > budgetSeconds)) {
+        return 1;
+    }
+    const double k = std::ceil(std::sqrt(expectedSeconds / budgetSeconds));
+    return static_cast<int>(std::clamp(k, 2.0, 16.0));
+}
+
+// Writes the w x h RGBA image that shows `small` (sw x sh RGBA) enlarged by pixel replication:
+// pixel (x, y) shows small's (x * sw / w, y * sh / h).
+void enlarge(const std::vector<uint8_t>& small, int sw, int sh, int w, int h, Rgba8Image& out) {
+    out.width = w;
+    out.height = h;
+    out.pixels.resize(4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    for (int y = 0; y < h; ++y) {
+        const std::size_t sy = static_cast<std::size_t>(y) * static_cast<std::size_t>(sh) /
+                               static_cast<std::size_t>(h);
+        for (int x = 0; x < w; ++x) {
+            const std::size_t sx = static_cast<std::size_t>(x) * static_cast<std::size_t>(sw) /
+                                   static_cast<std::size_t>(w);
+            const std::size_t from = 4 * (sy * static_cast<std::size_t>(sw) + sx);
+            const std::size_t to = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                                        static_cast<std::size_t>(x));
+            std::copy_n(small.begin() + static_cast<std::ptrdiff_t>(from), 4,
+                        out.pixels.begin() + static_cast<std::ptrdiff_t>(to));
+        }
+    }
+}
+
+// Linux: makes this thread "nicer" than the UI thread. The pass's helper threads are started by
+// this thread and inherit it, so when tracer and UI compete for the cores (always, since a pass
+// uses every core) the UI thread wins and the window keeps redrawing. Elsewhere: nothing.
+void lowerThisThreadsPriority() {
+#ifdef __linux__
+    constexpr int kRenderNice = 10;
+    setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kRenderNice);
+#endif
+}
+
+double raysPerSecond(const RayCounts& counts, double seconds) {
+    return seconds > 0.0 ? static_cast<double>(counts.primary + counts.shadow) / seconds : 0.0;
+}
+
+} // namespace
+
+bool samePicture(const RenderJob& a, const RenderJob& b) {
+    const RenderSettings& s = a.settings;
+    const RenderSettings& t = b.settings;
+    return a.scene == b.scene && s.camera.position == t.camera.position &&
+           s.camera.yawDegrees == t.camera.yawDegrees &&
+           s.camera.pitchDegrees == t.camera.pitchDegrees &&
+           s.camera.verticalFovDegrees == t.camera.verticalFovDegrees &&
+           s.light.position == t.light.position && s.light.color == t.light.color &&
+           s.light.intensity == t.light.intensity && s.indirect == t.indirect &&
+           s.indirectColor == t.indirectColor && s.indirectIntensity == t.indirectIntensity &&
+           s.shadows == t.shadows && s.shadowEpsilon == t.shadowEpsilon && s.width == t.width &&
+           s.height == t.height;
+}
+
+bool sameJob(const RenderJob& a, const RenderJob& b) {
+    return samePicture(a, b) && a.settings.samplesPerPixel == b.settings.samplesPerPixel &&
+           a.settings.threads == b.settings.threads && a.settings.display == b.settings.display &&
+           a.settings.exposure == b.settings.exposure;
+}
+
+RenderWorker::RenderWorker(double previewBudgetSeconds)
+    : previewBudgetSeconds_(previewBudgetSeconds), thread_([this] { run(); }) {}
+
+RenderWorker::~RenderWorker() {
+    {
+        std::lock_guard lock(mutex_);
+        quit_ = true;
+        cancel_.store(true);
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+uint64_t RenderWorker::submit(const RenderJob& job) {
+    uint64_t serial = 0;
+    {
+        std::lock_guard lock(mutex_);
+        if (!samePicture(job, job_)) {
+            cancel_.store(true);
+        }
+        job_ = job;
+        serial = ++jobSerial_;
+    }
+    wake_.notify_all();
+    return serial;
+}
+
+bool RenderWorker::takeLatest(ShownImage& out) {
+    std::lock_guard lock(mutex_);
+    if (latest_.serial <= out.serial) {
+        return false;
+    }
+    std::swap(out, latest_);
+    return true;
+}
+
+void RenderWorker::run() {
+    lowerThisThreadsPriority();
+    // The accumulation: `sums` holds `samples` samples per pixel of `job` (empty: none valid).
+    RenderJob job;
+    uint64_t takenSerial = 0;
+    std::vector<glm::vec3> sums;
+    uint32_t samples = 0;
+    bool previewTried = false;
+    double secondsPerPixel = 0.0; // measured by the last pass, 0 before any
+    uint64_t published = 0;
+    std::vector<glm::vec3> previewSums;
+    std::vector<uint8_t> previewRgba;
+    ShownImage staging;
+
+    const auto publish = [&](ShownImage& picture) {
+        std::lock_guard lock(mutex_);
+        picture.serial = ++published;
+        std::swap(latest_, picture);
+    };
+
+    for (;;) {
+        uint64_t serial = 0;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] {
+                return quit_ || (job_.scene &&
+                                 (jobSerial_ != takenSerial ||
+                                  samples < static_cast<uint32_t>(job_.settings.samplesPerPixel)));
+            });
+            if (quit_) {
+                return;
+            }
+            const bool restart = sums.empty() || !samePicture(job_, job) ||
+                                 static_cast<uint32_t>(job_.settings.samplesPerPixel) < samples;
+            job = job_;
+            serial = takenSerial = jobSerial_;
+            cancel_.store(false);
+            if (restart) {
+                sums.assign(pixelCount(job.settings), glm::vec3(0.0f));
+                samples = 0;
+                previewTried = false;
+            }
+        }
+        const RenderSettings& settings = job.settings;
+        const LoadedScene& loaded = *job.scene;
+        PassOptions pass;
+        pass.cancel = &cancel_;
+
+        if (samples == 0 && !previewTried) {
+            previewTried = true;
+            const int k = previewDivisor(
+                secondsPerPixel * static_cast<double>(pixelCount(settings)), previewBudgetSeconds_);
+            if (k > 1) {
+                RenderSettings small = settings;
+                small.width = (settings.width + k - 1) / k;
+                small.height = (settings.height + k - 1) / k;
+                previewSums.assign(pixelCount(small), glm::vec3(0.0f));
+                RayCounts counts;
+                const auto start = Clock::now();
+                if (!accumulatePass(loaded.scene, loaded.bvh, small, 0, previewSums, &counts,
+                                    pass)) {
+                    continue;
+                }
+                const double seconds = secondsSince(start);
+                secondsPerPixel = seconds / static_cast<double>(pixelCount(small));
+                previewRgba.resize(4 * pixelCount(small));
+                toRgba8(previewSums, 1.0f, settings.display, settings.exposure, previewRgba);
+                enlarge(previewRgba, small.width, small.height, settings.width, settings.height,
+                        staging.image);
+                staging.linear = Framebuffer();
+                staging.settings = small;
+                staging.scene = job.scene;
+                staging.jobSerial = serial;
+                staging.preview = true;
+                staging.final = false;
+                staging.passSeconds = seconds;
+                staging.raysPerSecond = raysPerSecond(counts, seconds);
+                publish(staging);
+                continue;
+            }
+        }
+
+        double seconds = 0.0;
+        RayCounts counts;
+        if (samples < static_cast<uint32_t>(settings.samplesPerPixel)) {
+            const auto start = Clock::now();
+            if (!accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, pass)) {
+                sums.clear(); // partly updated: worthless, whatever the next job is
+                continue;
+            }
+            seconds = secondsSince(start);
+            secondsPerPixel = seconds / static_cast<double>(pixelCount(settings));
+            ++samples;
+        }
+        // A new pass, or a new job that keeps the samples (display, cap, threads): show it.
+        staging.image.width = settings.width;
+        staging.image.height = settings.height;
+        staging.image.pixels.resize(4 * pixelCount(settings));
+        toRgba8(sums, 1.0f / static_cast<float>(samples), settings.display, settings.exposure,
+                staging.image.pixels);
+        if (job.keepLinear) {
+            // The same arithmetic as core's render(): sum * (1 / n).
+            const float scale = 1.0f / static_cast<float>(samples);
+            staging.linear = Framebuffer(settings.width, settings.height);
+            std::transform(sums.begin(), sums.end(), staging.linear.pixels.begin(),
+                           [scale](const glm::vec3& sum) { return sum * scale; });
+        } else {
+            staging.linear = Framebuffer();
+        }
+        staging.settings = settings;
+        staging.settings.samplesPerPixel = static_cast<int>(samples);
+        staging.scene = job.scene;
+        staging.jobSerial = serial;
+        staging.preview = false;
+        staging.final = samples >= static_cast<uint32_t>(settings.samplesPerPixel);
+        staging.passSeconds = seconds;
+        staging.raysPerSecond = raysPerSecond(counts, seconds);
+        publish(staging);
+    }
+}
+
+} // namespace raylab::viewer

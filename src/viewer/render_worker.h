@@ -1,0 +1,72 @@
+#pragma once
+// The render thread. It owns an accumulation buffer of sums and, while the job does not change,
+// adds one sample per pixel per pass (sample 0 is the pixel centre, later ones jittered) until
+// the job's sample cap; then it sleeps on a condition variable (no CPU use). A new job that changes
+// the picture cancels the pass in flight (an atomic flag checked between tiles) and restarts; a
+// change of display transform only re-maps the sums; a higher cap continues accumulating.
+//
+// After a restart, when the last passes show a full pass would take longer than a UI frame
+// budget, the thread first renders a coarse preview (1/k resolution, upscaled by pixel
+// replication) so that moving the camera stays fluid; the picture sharpens when the camera stops.
+//
+// Threads: accumulatePass runs settings.threads workers and this thread is one of them.
+
+#include "loaded_scene.h"
+#include "shown_image.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace raylab::viewer {
+
+struct RenderJob {
+    std::shared_ptr<const LoadedScene> scene;
+    // width and height: the render resolution; samplesPerPixel: the sample cap. Must pass
+    // validate().
+    RenderSettings settings;
+    bool keepLinear = false; // also publish the linear picture (for PFM/EXR screenshots)
+};
+
+// True when two jobs give the same accumulated samples (scene, camera, light, indirect, shadows,
+// size); display, exposure, cap and thread count do not change the samples.
+bool samePicture(const RenderJob& a, const RenderJob& b);
+// True when every field of the two jobs is equal (keepLinear aside).
+bool sameJob(const RenderJob& a, const RenderJob& b);
+
+class RenderWorker {
+public:
+    // previewBudgetSeconds: a restart renders a preview first when a full pass is expected to
+    // take longer than this.
+    explicit RenderWorker(double previewBudgetSeconds = 1.0 / 30.0);
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+    // Cancels the pass in flight and joins the thread.
+    ~RenderWorker();
+
+    // Replaces the job; returns its serial (1, 2, ...). Cancels the pass in flight when the
+    // picture changes.
+    uint64_t submit(const RenderJob& job);
+
+    // Moves the newest published picture into `out` when it is newer than out.serial (the buffer
+    // `out` held is recycled). Returns whether it did.
+    bool takeLatest(ShownImage& out);
+
+private:
+    void run();
+
+    const double previewBudgetSeconds_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    RenderJob job_;          // guarded by mutex_
+    uint64_t jobSerial_ = 0; // guarded by mutex_
+    bool quit_ = false;      // guarded by mutex_
+    ShownImage latest_;      // guarded by mutex_
+    std::atomic<bool> cancel_{false};
+    std::thread thread_; // last: starts after every member above exists
+};
+
+} // namespace raylab::viewer

@@ -1,0 +1,32 @@
+#pragma once
+// Screenshots: the rendered picture at render resolution (no panel) as PNG, with the exact
+// settings that reproduce it twice: as JSON (with its "scene") in the PNG's "raylab-settings"
+// tEXt chunk and as a .json file beside it, so that
+//   raylab-render --settings that.json -o again.png
+// writes the same bytes.
+
+#include "shown_image.h"
+
+#include <string>
+
+namespace raylab::viewer {
+
+inline constexpr const char* kSettingsChunk = "raylab-settings";
+inline constexpr const char* kSceneChunk = "raylab-scene";
+
+// `path` with its extension replaced by .json (a.png -> a.json).
+std::string settingsPathFor(const std::string& path);
+
+// Writes the picture at `path` and its settings beside it: a .png gets the displayed bytes and the
+// text chunks; .pfm and .exr get ShownImage::linear (which must be there), each atomically
+// (temporary file and rename; a failure leaves no file). Overwrites existing files: the caller
+// chose the name.
+bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error);
+
+// Writes into `dir` under the first name raylab-0001.png, raylab-0002.png, ... whose .png and
+// .json are both free, never overwriting a file, even one another process creates meanwhile
+// (the name is claimed with link(2)). Sets `path` to the PNG written.
+bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
+                            std::string& error);
+
+} // namespace raylab::viewer

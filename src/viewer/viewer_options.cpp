@@ -1,0 +1,89 @@
+#include "viewer_options.h"
+
+#include <cstdlib>
+#include <string_view>
+#include <vector>
+
+namespace raylab::viewer {
+
+namespace {
+
+// True when argv has `flag` as an option (alone or as --flag=value).
+bool hasFlag(const std::vector<const char*>& args, std::string_view flag) {
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        if (arg == flag || (arg.size() > flag.size() && arg.substr(0, flag.size()) == flag &&
+                            arg[flag.size()] == '=')) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+int parseViewerOptions(int argc, const char* const* argv, ViewerOptions& options,
+                       std::string& error) {
+    // Take the viewer's own flags out; pass the rest to the shared parser.
+    std::vector<const char*> shared;
+    for (int i = 0; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (i > 0 && arg == "--no-panel") {
+            options.showPanel = false;
+        } else if (i > 0 && arg == "--readback") {
+            if (i + 1 >= argc) {
+                error = "--readback needs a file name";
+                return 2;
+            }
+            options.readback = argv[++i];
+        } else if (i > 0 && arg == "--resolution-scale") {
+            char* end = nullptr;
+            const float scale = i + 1 < argc ? std::strtof(argv[i + 1], &end) : 0.0f;
+            if (i + 1 >= argc || end == argv[i + 1] || *end != '\0' || !(scale >= 0.1f) ||
+                !(scale <= 1.0f)) {
+                error = "--resolution-scale needs a number in [0.1, 1]";
+                return 2;
+            }
+            options.resolutionScale = scale;
+            ++i;
+        } else {
+            shared.push_back(argv[i]);
+        }
+    }
+    const int status = parseCommandLine(static_cast<int>(shared.size()), shared.data(),
+                                        Program::Viewer, options.command, error);
+    if (status != 0) {
+        return status;
+    }
+    const bool fromFile = hasFlag(shared, "--settings");
+    RenderSettings& settings = options.command.settings;
+    if (!fromFile && !hasFlag(shared, "--spp")) {
+        settings.samplesPerPixel = kDefaultSampleCap;
+    }
+    if (!fromFile && !hasFlag(shared, "--width") && !hasFlag(shared, "--height")) {
+        settings.width = kDefaultWindowWidth;
+        settings.height = kDefaultWindowHeight;
+    }
+    if (!options.readback.empty() && options.command.frames <= 0) {
+        error = "--readback needs --frames N";
+        return 2;
+    }
+    return 0;
+}
+
+std::string viewerUsage() {
+    return usage(Program::Viewer) +
+           "\nViewer only:\n"
+           "  --no-panel         start with the panel hidden (F1 toggles it)\n"
+           "  --resolution-scale S  render at the window's size times S, 0.1..1 (default 1)\n"
+           "  --readback FILE    test mode: with --frames, also save what the window shows (read\n"
+           "                     back from the GL framebuffer) of the last frame as PNG\n"
+           "The sample cap is --spp (default " +
+           std::to_string(kDefaultSampleCap) +
+           "). With --frames N and --screenshot or --readback, the viewer shows at least N frames\n"
+           "and keeps going until the picture has reached the sample cap, then saves and quits.\n"
+           "Keys: Up/Down move, Left/Right turn, W/S A/D Q/E move the light, mouse drag turns,\n"
+           "wheel moves, F12 screenshot, F1 panel, Escape quits.\n";
+}
+
+} // namespace raylab::viewer

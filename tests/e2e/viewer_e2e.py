@@ -1,0 +1,417 @@
+#!/usr/bin/env python3
+"""End-to-end tests of the viewer `raylab`: the real binary in a real window, under Xvfb with
+Mesa's software OpenGL (llvmpipe), driven with xdotool.
+
+    viewer_e2e.py TEST --raylab PATH --render PATH
+
+runs one test (see TESTS) and exits 0 when it passes, 1 when it fails, and 77 (ctest's skip code
+here) when it needs a window and xvfb-run is not installed. Tests that need a window re-run
+themselves inside `xvfb-run -a`.
+"""
+
+import argparse
+import glob
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngread import read_png  # noqa: E402
+
+SKIP = 77
+XVFB_SERVER_ARGS = "-screen 0 1280x800x24"
+STEP = 0.1  # core's navigationStep for the lab's box
+TURN_DEGREES = 5.0  # the viewer's kTurnStepDegrees
+PANEL_BUTTON = (100, 44)  # window coordinates inside the panel's "Save screenshot" button
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+def close(a, b, tolerance=1e-4):
+    return abs(a - b) <= tolerance
+
+
+class Env:
+    def __init__(self, raylab, render, workdir):
+        self.raylab = raylab
+        self.render = render
+        self.workdir = workdir
+
+    def run(self, program, args, timeout=120):
+        result = subprocess.run([program] + args, cwd=self.workdir, capture_output=True,
+                                text=True, timeout=timeout)
+        return result
+
+    def run_ok(self, program, args, timeout=120):
+        result = self.run(program, args, timeout)
+        check(result.returncode == 0,
+              f"{os.path.basename(program)} {' '.join(args)} exited {result.returncode}: "
+              f"{result.stderr.strip()}")
+        return result
+
+    def path(self, name):
+        return os.path.join(self.workdir, name)
+
+
+def same_pixels(a, b, what):
+    check((a.width, a.height) == (b.width, b.height),
+          f"{what}: sizes differ, {a.width}x{a.height} vs {b.width}x{b.height}")
+    if a.rgba != b.rgba:
+        for i in range(0, len(a.rgba), 4):
+            if a.rgba[i:i + 4] != b.rgba[i:i + 4]:
+                p = i // 4
+                raise Failure(f"{what}: pixel ({p % a.width}, {p // a.width}) differs: "
+                              f"{tuple(a.rgba[i:i + 4])} vs {tuple(b.rgba[i:i + 4])}")
+
+
+def distinct_colours(png):
+    return len({png.rgba[i:i + 3] for i in range(0, len(png.rgba), 4)})
+
+
+# --- tests without a window -----------------------------------------------------------------
+
+def test_bad_input(env):
+    """Unknown flag: one line, exit 2. Missing or broken scene: one line, exit 1. No files."""
+    result = env.run(env.raylab, ["--no-such-flag"])
+    check(result.returncode == 2, f"unknown flag: exit {result.returncode}, expected 2")
+    check(len(result.stderr.strip().splitlines()) == 1,
+          f"unknown flag: expected one line, got {result.stderr!r}")
+    result = env.run(env.raylab, ["--fov", "nan", "--frames", "1"])
+    check(result.returncode == 2, f"--fov nan: exit {result.returncode}, expected 2")
+    result = env.run(env.raylab, ["--readback"])
+    check(result.returncode == 2, f"--readback without file: exit {result.returncode}")
+    result = env.run(env.raylab, [env.path("missing.obj"), "--frames", "1"])
+    check(result.returncode == 1, f"missing scene: exit {result.returncode}, expected 1")
+    check(len(result.stderr.strip().splitlines()) == 1,
+          f"missing scene: expected one line, got {result.stderr!r}")
+    garbage = env.path("garbage.obj")
+    with open(garbage, "wb") as f:
+        f.write(bytes(range(256)) * 8)
+    result = env.run(env.raylab, [garbage, "--frames", "1", "--screenshot", "x.png"])
+    check(result.returncode == 1, f"garbage scene: exit {result.returncode}, expected 1")
+    check(len(result.stderr.strip().splitlines()) == 1,
+          f"garbage scene: expected one line, got {result.stderr!r}")
+    check(not os.path.exists(env.path("x.png")), "a failed start left a screenshot behind")
+    result = env.run(env.raylab, ["--help"])
+    check(result.returncode == 0 and "--frames" in result.stdout and "--readback" in result.stdout,
+          "--help does not list the viewer's options")
+
+
+# --- tests in a window, scripted by --frames ------------------------------------------------
+
+def test_screenshot_matches_render(env):
+    """`raylab --frames N --screenshot a.png` equals raylab-render with the same settings."""
+    cases = [
+        ["--width", "320", "--height", "240", "--spp", "4"],
+        ["--width", "200", "--height", "160", "--spp", "1", "--yaw", "12", "--pitch", "-5",
+         "--light-pos", "0.3,0.6,-0.5", "--light-power", "20,14,10", "--display", "srgb",
+         "--exposure", "0.5", "--shadow-eps", "0"],
+    ]
+    for n, flags in enumerate(cases):
+        shot, again, from_json = f"a{n}.png", f"b{n}.png", f"c{n}.png"
+        env.run_ok(env.raylab, flags + ["--no-panel", "--frames", "5", "--screenshot", shot])
+        env.run_ok(env.render, flags + ["-o", again])
+        a, b = read_png(env.path(shot)), read_png(env.path(again))
+        same_pixels(a, b, f"viewer screenshot vs raylab-render {' '.join(flags)}")
+        check(distinct_colours(a) > 5, f"{shot} is nearly blank")
+        settings = json.load(open(env.path(f"a{n}.json")))
+        spp = int(flags[flags.index("--spp") + 1])
+        check(settings["image"]["samples"] == spp, f"{shot}: JSON samples "
+              f"{settings['image']['samples']}, expected {spp}")
+        check(settings["image"]["width"] == a.width and settings["image"]["height"] == a.height,
+              f"{shot}: JSON size differs from the image")
+        check(json.loads(a.texts.get("raylab-settings", "null")) == settings,
+              f"{shot}: the PNG's raylab-settings chunk differs from a{n}.json")
+        env.run_ok(env.render, ["--settings", f"a{n}.json", "-o", from_json])
+        same_pixels(a, read_png(env.path(from_json)), f"raylab-render --settings a{n}.json")
+
+
+def test_readback_matches_cpu(env):
+    """What the window shows (glReadPixels) is the CPU image: nothing lost, nothing flipped."""
+    for scale in ["1", "0.5", "0.37"]:
+        shot, back = f"s{scale}.png", f"r{scale}.png"
+        env.run_ok(env.raylab, ["--width", "320", "--height", "240", "--spp", "2", "--no-panel",
+                                "--resolution-scale", scale, "--frames", "3",
+                                "--screenshot", shot, "--readback", back])
+        image, window = read_png(env.path(shot)), read_png(env.path(back))
+        check((window.width, window.height) == (320, 240),
+              f"readback is {window.width}x{window.height}, expected the 320x240 window")
+        check(distinct_colours(image) > 5, f"{shot} is nearly blank")
+        if scale == "1":
+            same_pixels(window, image, "GL readback vs CPU image")
+            continue
+        check(image.width == round(320 * float(scale)), f"{shot}: width {image.width}")
+        # Nearest texel with an exact mapping: pixel x shows texel floor((x + .5) * W / w).
+        for y in range(window.height):
+            ty = ((2 * y + 1) * image.height) // (2 * window.height)
+            for x in range(window.width):
+                tx = ((2 * x + 1) * image.width) // (2 * window.width)
+                if window.pixel(x, y) != image.pixel(tx, ty):
+                    raise Failure(f"scale {scale}: window pixel ({x}, {y}) = "
+                                  f"{window.pixel(x, y)}, texel ({tx}, {ty}) = "
+                                  f"{image.pixel(tx, ty)}")
+
+
+def test_frames_quit(env):
+    """--frames N without a screenshot quits by itself, leaving no file."""
+    start = time.monotonic()
+    env.run_ok(env.raylab, ["--width", "200", "--height", "150", "--frames", "3"], timeout=60)
+    check(time.monotonic() - start < 30, "--frames 3 took more than 30 s")
+    check(os.listdir(env.workdir) == [], f"files left behind: {os.listdir(env.workdir)}")
+
+
+# --- interactive tests with xdotool ---------------------------------------------------------
+
+class Viewer:
+    """A running viewer whose screenshots go to workdir/shots."""
+
+    def __init__(self, env, args):
+        self.env = env
+        self.shots = env.path("shots")
+        os.makedirs(self.shots, exist_ok=True)
+        self.log = tempfile.TemporaryFile(mode="w+")  # stdout and stderr, outside workdir
+        self.proc = subprocess.Popen([env.raylab, "--screenshot-dir", self.shots] + args,
+                                     cwd=env.workdir, stdout=self.log, stderr=subprocess.STDOUT,
+                                     text=True)
+        self.window = self.find_window()
+        self.xdotool("windowfocus", self.window)  # keys go to the focused window
+        self.xdotool("mousemove", "--window", self.window, "300", "200")
+        time.sleep(0.5)
+
+    def output(self):
+        self.log.seek(0)
+        return self.log.read().strip()
+
+    def check_running(self):
+        if self.proc.poll() is not None:
+            raise Failure(f"raylab ended ({self.proc.returncode}): {self.output()}")
+
+    def xdotool(self, *args):
+        result = subprocess.run(["xdotool"] + list(args), capture_output=True, text=True,
+                                timeout=30)
+        check(result.returncode == 0, f"xdotool {' '.join(args)}: {result.stderr.strip()}")
+        return result.stdout.strip()
+
+    def find_window(self):
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline:
+            self.check_running()
+            result = subprocess.run(["xdotool", "search", "--onlyvisible", "--name", "^raylab"],
+                                    capture_output=True, text=True, timeout=10)
+            if result.returncode == 0 and result.stdout.strip():
+                return result.stdout.split()[0]
+            time.sleep(0.2)
+        raise Failure("the viewer's window did not appear within 30 s")
+
+    def screenshots(self):
+        return sorted(glob.glob(os.path.join(self.shots, "raylab-*.png")))
+
+    def shot_after(self, *action):
+        """Runs the xdotool action; returns (png, settings) of the one new screenshot."""
+        before = self.screenshots()
+        self.xdotool(*action)
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline:
+            self.check_running()
+            new = [p for p in self.screenshots() if p not in before]
+            if new and os.path.exists(new[0][:-4] + ".json"):
+                check(len(new) == 1, f"one action wrote {len(new)} screenshots")
+                return read_png(new[0]), json.load(open(new[0][:-4] + ".json"))
+            time.sleep(0.1)
+        raise Failure(f"no screenshot after xdotool {' '.join(action)}")
+
+    def key_shot(self, *keys):
+        return self.shot_after("key", "--delay", "80", *keys, "F12")
+
+    def quit(self):
+        self.xdotool("key", "Escape")
+        try:
+            code = self.proc.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            raise Failure("Escape did not end the viewer within 20 s")
+        check(code == 0, f"the viewer exited {code}: {self.output()}")
+
+    def kill(self):
+        if self.proc.poll() is None:
+            self.proc.kill()
+            self.proc.wait()
+
+
+def vec(settings, part):
+    return settings[part]["position"]
+
+
+def test_keys_and_buttons(env):
+    """Up, W, Q, Left do what the keys say (checked in the saved settings); F12 and the panel's
+    button write screenshots, numbered, never overwriting; Escape quits."""
+    viewer = Viewer(env, ["--width", "400", "--height", "300", "--spp", "1"])
+    try:
+        _, s0 = viewer.key_shot()
+        check(vec(s0, "camera") == [0.0, 0.0, -3.0] and s0["camera"]["yaw"] == 0.0,
+              f"unexpected start camera {s0['camera']}")
+        _, s1 = viewer.key_shot("Up")
+        c0, c1 = vec(s0, "camera"), vec(s1, "camera")
+        check(close(c1[2] - c0[2], STEP) and close(c1[0], c0[0]) and close(c1[1], c0[1]),
+              f"Up moved the camera from {c0} to {c1}, expected +{STEP} along z")
+        _, s2 = viewer.key_shot("w")
+        l1, l2 = vec(s1, "light"), vec(s2, "light")
+        check(close(l2[2] - l1[2], STEP) and close(l2[0], l1[0]) and close(l2[1], l1[1]),
+              f"W moved the light from {l1} to {l2}, expected +{STEP} along z")
+        _, s3 = viewer.key_shot("q")
+        l3 = vec(s3, "light")
+        check(close(l3[1] - l2[1], -STEP) and close(l3[0], l2[0]) and close(l3[2], l2[2]),
+              f"Q moved the light from {l2} to {l3}, expected -{STEP} along y")
+        _, s4 = viewer.key_shot("Left")
+        check(close(s4["camera"]["yaw"], TURN_DEGREES) and vec(s4, "camera") == vec(s3, "camera"),
+              f"Left gave camera {s4['camera']}, expected yaw {TURN_DEGREES} and no move")
+        check(s4["light"] == s3["light"], "Left moved the light")
+        png, s5 = viewer.shot_after("mousemove", "--window", viewer.window,
+                                    str(PANEL_BUTTON[0]), str(PANEL_BUTTON[1]), "click", "1")
+        check(s5 == s4, "clicking the screenshot button changed the settings")
+        check((png.width, png.height) == (400, 300), "the button's screenshot is not 400x300")
+        names = [os.path.basename(p) for p in viewer.screenshots()]
+        check(names == [f"raylab-{n:04d}.png" for n in range(1, 7)],
+              f"screenshot names {names}")
+        viewer.quit()
+    finally:
+        viewer.kill()
+    leftovers = [f for f in os.listdir(viewer.shots) if not f.startswith("raylab-")]
+    check(leftovers == [], f"files left beside the screenshots: {leftovers}")
+
+
+def test_mouse(env):
+    """A drag outside the panel turns the camera (right: yaw up, the view turns left; down: pitch
+    up); the wheel moves it forward; a drag that starts on the panel does not turn it."""
+    viewer = Viewer(env, ["--width", "800", "--height", "600", "--spp", "1"])
+    w = viewer.window
+    try:
+        _, s0 = viewer.key_shot()
+        viewer.xdotool("mousemove", "--window", w, "500", "300", "mousedown", "1")
+        time.sleep(0.3)
+        viewer.xdotool("mousemove", "--window", w, "560", "330")
+        time.sleep(0.3)
+        viewer.xdotool("mouseup", "1")
+        time.sleep(0.2)
+        _, s1 = viewer.key_shot()
+        degrees_per_pixel = s0["camera"]["fov"] / 600
+        check(close(s1["camera"]["yaw"], 60 * degrees_per_pixel, 0.05) and
+              close(s1["camera"]["pitch"], 30 * degrees_per_pixel, 0.05),
+              f"dragging by (60, 30) px gave camera {s1['camera']}")
+        check(vec(s1, "camera") == vec(s0, "camera"), "the drag moved the camera")
+        _, s2 = viewer.shot_after("mousemove", "--window", w, "500", "300", "click", "4",
+                                  "sleep", "0.3", "key", "F12")
+        c1, c2 = vec(s1, "camera"), vec(s2, "camera")
+        moved = math.dist(c1, c2)
+        check(close(moved, STEP) and c2[2] > c1[2], f"the wheel moved the camera {c1} -> {c2}")
+        viewer.xdotool("mousemove", "--window", w, "100", "200", "mousedown", "1")
+        time.sleep(0.3)
+        viewer.xdotool("mousemove", "--window", w, "100", "260")
+        time.sleep(0.3)
+        viewer.xdotool("mouseup", "1")
+        time.sleep(0.2)
+        _, s3 = viewer.key_shot()
+        check(s3["camera"]["yaw"] == s2["camera"]["yaw"] and
+              s3["camera"]["pitch"] == s2["camera"]["pitch"],
+              "a drag on the panel turned the camera")
+        viewer.quit()
+    finally:
+        viewer.kill()
+
+
+def test_resize(env):
+    """Resizing the window to 1 x 1 and back leaves it rendering at the new sizes."""
+    viewer = Viewer(env, ["--width", "400", "--height", "300", "--spp", "2"])
+    try:
+        first, _ = viewer.key_shot()
+        check((first.width, first.height) == (400, 300), "first screenshot is not 400x300")
+        viewer.xdotool("windowsize", viewer.window, "1", "1")
+        time.sleep(1.0)
+        tiny, s = viewer.key_shot()
+        check((tiny.width, tiny.height) == (1, 1) and s["image"]["width"] == 1,
+              f"at 1 x 1 the screenshot is {tiny.width}x{tiny.height}")
+        viewer.xdotool("windowsize", viewer.window, "360", "280")
+        time.sleep(1.0)
+        back, s = viewer.key_shot()
+        check((back.width, back.height) == (360, 280) and s["image"]["height"] == 280,
+              f"after resizing back the screenshot is {back.width}x{back.height}")
+        check(distinct_colours(back) > 5, "after resizing back the picture is blank")
+        env.run_ok(env.render, ["--settings", os.path.join(viewer.shots, "raylab-0003.json"),
+                                "-o", "again.png"])
+        same_pixels(back, read_png(env.path("again.png")), "resized screenshot vs raylab-render")
+        viewer.quit()
+    finally:
+        viewer.kill()
+
+
+def test_close_in_flight(env):
+    """Escape while a long pass is in flight cancels it and quits promptly, leaving no file."""
+    viewer = Viewer(env, ["--width", "1200", "--height", "780", "--spp", "4096"])
+    try:
+        time.sleep(1.5)
+        start = time.monotonic()
+        viewer.quit()
+        check(time.monotonic() - start < 10, "quitting took more than 10 s")
+    finally:
+        viewer.kill()
+    check(os.listdir(viewer.shots) == [], f"files left: {os.listdir(viewer.shots)}")
+    check(sorted(os.listdir(env.workdir)) == ["shots"], f"files left: {os.listdir(env.workdir)}")
+
+
+TESTS = {
+    "bad_input": (test_bad_input, False),
+    "screenshot_matches_render": (test_screenshot_matches_render, True),
+    "readback_matches_cpu": (test_readback_matches_cpu, True),
+    "frames_quit": (test_frames_quit, True),
+    "keys_and_buttons": (test_keys_and_buttons, True),
+    "mouse": (test_mouse, True),
+    "resize": (test_resize, True),
+    "close_in_flight": (test_close_in_flight, True),
+}
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("test", choices=sorted(TESTS))
+    parser.add_argument("--raylab", required=True)
+    parser.add_argument("--render", required=True)
+    parser.add_argument("--inside-xvfb", action="store_true", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    function, needs_window = TESTS[args.test]
+    if needs_window and not args.inside_xvfb:
+        xvfb = shutil.which("xvfb-run")
+        if xvfb is None:
+            print(f"SKIP {args.test}: xvfb-run is not installed")
+            return SKIP
+        # -a picks a free display; starting from a per-process number makes two runs at once
+        # (ctest -j, several build trees) unlikely to race for the same one.
+        first = 100 + os.getpid() % 800
+        command = [xvfb, "-a", "-n", str(first), "-s", XVFB_SERVER_ARGS, sys.executable, os.path.abspath(__file__),
+                   args.test, "--raylab", args.raylab, "--render", args.render, "--inside-xvfb"]
+        return subprocess.run(command).returncode
+    os.environ["LIBGL_ALWAYS_SOFTWARE"] = "1"
+    with tempfile.TemporaryDirectory(prefix=f"raylab-e2e-{args.test}-") as workdir:
+        env = Env(os.path.abspath(args.raylab), os.path.abspath(args.render), workdir)
+        try:
+            function(env)
+        except Failure as failure:
+            print(f"FAIL {args.test}: {failure}")
+            return 1
+    print(f"PASS {args.test}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,224 @@
+// The viewer's logic without a window: the render thread's pictures equal core's render(), edits
+// are validated, keys move what they say, screenshots never overwrite.
+
+#include "core/cornell_box.h"
+#include "core/display_transform.h"
+#include "core/renderer.h"
+#include "io/image_io.h"
+#include "io/settings_json.h"
+#include "navigation.h"
+#include "render_worker.h"
+#include "screenshot.h"
+#include "settings_edit.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <limits>
+#include <thread>
+
+namespace raylab::viewer {
+namespace {
+
+std::shared_ptr<const LoadedScene> labBox() {
+    auto loaded = std::make_shared<LoadedScene>();
+    loaded->source = "cornell";
+    loaded->scene = makeCornellBox();
+    loaded->bvh = buildBvh(loaded->scene);
+    return loaded;
+}
+
+RenderSettings smallSettings(int samples) {
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.samplesPerPixel = samples;
+    s.threads = 2;
+    return s;
+}
+
+// Waits (at most 30 s) for a final picture of job `serial`.
+ShownImage waitFinal(RenderWorker& worker, uint64_t serial) {
+    ShownImage shown;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < deadline) {
+        worker.takeLatest(shown);
+        if (shown.jobSerial == serial && shown.final && !shown.preview) {
+            return shown;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ADD_FAILURE() << "no final picture within 30 s";
+    return shown;
+}
+
+std::vector<uint8_t> reference(const LoadedScene& loaded, const RenderSettings& settings) {
+    const Framebuffer image = render(loaded.scene, loaded.bvh, settings);
+    return toRgba8(image, settings.display, settings.exposure);
+}
+
+TEST(ViewerRenderWorker, FinalPictureEqualsCoreRender) {
+    const auto box = labBox();
+    RenderWorker worker;
+    const RenderSettings settings = smallSettings(3);
+    const ShownImage shown = waitFinal(worker, worker.submit({box, settings}));
+    EXPECT_EQ(shown.settings.samplesPerPixel, 3);
+    EXPECT_EQ(shown.image.width, 64);
+    EXPECT_EQ(shown.image.height, 48);
+    EXPECT_EQ(shown.image.pixels, reference(*box, settings));
+}
+
+TEST(ViewerRenderWorker, ChangeRestartsAndDisplayOnlyRemaps) {
+    const auto box = labBox();
+    RenderWorker worker;
+    RenderSettings settings = smallSettings(2);
+    worker.submit({box, settings});
+    settings.camera.yawDegrees = 10.0f; // replaces the job at once, likely mid-pass
+    const ShownImage moved = waitFinal(worker, worker.submit({box, settings}));
+    EXPECT_EQ(moved.image.pixels, reference(*box, settings));
+    EXPECT_EQ(moved.settings.camera.yawDegrees, 10.0f);
+
+    settings.display = DisplayMode::Srgb;
+    settings.exposure = 1.0f;
+    const ShownImage remapped = waitFinal(worker, worker.submit({box, settings}));
+    EXPECT_EQ(remapped.settings.samplesPerPixel, 2);
+    EXPECT_EQ(remapped.image.pixels, reference(*box, settings));
+
+    settings.samplesPerPixel = 4; // a higher cap continues accumulating
+    const ShownImage more = waitFinal(worker, worker.submit({box, settings}));
+    EXPECT_EQ(more.settings.samplesPerPixel, 4);
+    EXPECT_EQ(more.image.pixels, reference(*box, settings));
+}
+
+TEST(ViewerRenderWorker, LinearPictureEqualsCoreRender) {
+    const auto box = labBox();
+    RenderWorker worker;
+    const RenderSettings settings = smallSettings(2);
+    const ShownImage shown = waitFinal(worker, worker.submit({box, settings, true}));
+    const Framebuffer expected = render(box->scene, box->bvh, settings);
+    ASSERT_EQ(shown.linear.pixels.size(), expected.pixels.size());
+    EXPECT_TRUE(shown.linear.pixels == expected.pixels);
+}
+
+TEST(ViewerRenderWorker, PreviewWhenPassesAreSlow) {
+    const auto box = labBox();
+    RenderWorker worker(1e-9); // any pass is "slow": every restart starts with a preview
+    RenderSettings settings = smallSettings(1);
+    waitFinal(worker, worker.submit({box, settings}));
+    settings.camera.position.z = -2.5f;
+    const uint64_t serial = worker.submit({box, settings});
+    bool sawPreview = false;
+    ShownImage shown;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!(shown.jobSerial == serial && shown.final) &&
+           std::chrono::steady_clock::now() < deadline) {
+        if (worker.takeLatest(shown) && shown.jobSerial == serial && shown.preview) {
+            sawPreview = true;
+            EXPECT_EQ(shown.image.width, 64); // enlarged to the render resolution
+            EXPECT_LT(shown.settings.width, 64);
+        }
+    }
+    EXPECT_TRUE(sawPreview);
+    EXPECT_EQ(shown.image.pixels, reference(*box, settings));
+}
+
+TEST(ViewerSettingsEdit, RefusesNonsenseAndKeepsTheCurrentSettings) {
+    RenderSettings current;
+    std::string why;
+    RenderSettings edit = current;
+    edit.light.intensity = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(acceptEdit(edit, current, why));
+    EXPECT_FALSE(why.empty());
+    EXPECT_EQ(current.light.intensity, 14.0f);
+    edit = current;
+    edit.light.intensity = -1.0f;
+    EXPECT_FALSE(acceptEdit(edit, current, why));
+    for (const float fov : {0.0f, 180.0f, -5.0f, std::numeric_limits<float>::infinity()}) {
+        edit = current;
+        edit.camera.verticalFovDegrees = fov;
+        EXPECT_FALSE(acceptEdit(edit, current, why)) << fov;
+    }
+    EXPECT_EQ(current.camera.verticalFovDegrees, kLabVerticalFovDegrees);
+    edit = current;
+    edit.camera.verticalFovDegrees = 90.0f;
+    EXPECT_TRUE(acceptEdit(edit, current, why));
+    EXPECT_EQ(current.camera.verticalFovDegrees, 90.0f);
+}
+
+TEST(ViewerSettingsEdit, EpsilonSliderReachesZeroAndIsLogarithmic) {
+    const float max = 0.1f;
+    EXPECT_EQ(epsilonFromSlider(0.0f, max), 0.0f);
+    EXPECT_FLOAT_EQ(epsilonFromSlider(1.0f, max), max);
+    EXPECT_NEAR(epsilonFromSlider(0.5f, max), 1e-4f, 1e-9f); // three of six decades down
+    EXPECT_EQ(sliderFromEpsilon(0.0f, max), 0.0f);
+    EXPECT_NEAR(epsilonFromSlider(sliderFromEpsilon(1e-3f, max), max), 1e-3f, 1e-8f);
+    EXPECT_GT(sliderFromEpsilon(1e-12f, max), 0.0f); // tiny but non-zero stays off zero
+}
+
+TEST(ViewerNavigation, KeysMoveWhatTheySay) {
+    RenderSettings s;
+    applyNavAction(NavAction::CameraForward, 0.1f, s);
+    EXPECT_NEAR(s.camera.position.z, -2.9f, 1e-6f);
+    applyNavAction(NavAction::CameraBack, 0.1f, s);
+    EXPECT_NEAR(s.camera.position.z, -3.0f, 1e-6f);
+    applyNavAction(NavAction::LightForward, 0.1f, s);
+    EXPECT_NEAR(s.light.position.z, -0.6f, 1e-6f);
+    applyNavAction(NavAction::LightDown, 0.1f, s);
+    EXPECT_NEAR(s.light.position.y, 0.4f, 1e-6f);
+    applyNavAction(NavAction::LightUp, 0.1f, s);
+    applyNavAction(NavAction::LightRight, 0.1f, s); // the image's right is -x
+    EXPECT_NEAR(s.light.position.x, -0.1f, 1e-6f);
+    applyNavAction(NavAction::LightLeft, 0.1f, s);
+    EXPECT_NEAR(s.light.position.x, 0.0f, 1e-6f);
+    applyNavAction(NavAction::TurnLeft, 0.1f, s);
+    EXPECT_EQ(s.camera.yawDegrees, kTurnStepDegrees);
+    // After turning left, forward leans to +x (the image's left).
+    applyNavAction(NavAction::CameraForward, 1.0f, s);
+    EXPECT_GT(s.camera.position.x, 0.0f);
+    turnCamera(0.0f, 500.0f, s);
+    EXPECT_EQ(s.camera.pitchDegrees, kMaxPitchDegrees);
+    turnCamera(400.0f, 0.0f, s);
+    EXPECT_NEAR(s.camera.yawDegrees, kTurnStepDegrees + 40.0f, 1e-4f);
+}
+
+TEST(ViewerScreenshot, NumberedNamesNeverOverwrite) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() /
+        ("raylab-viewer-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    { std::ofstream(dir / "raylab-0001.png") << "not mine"; }
+    { std::ofstream(dir / "raylab-0002.json") << "{}"; }
+    ShownImage shown;
+    shown.image.width = 2;
+    shown.image.height = 1;
+    shown.image.pixels = {255, 0, 0, 255, 0, 0, 255, 255};
+    shown.settings.width = 2;
+    shown.settings.height = 1;
+    std::string path, error;
+    ASSERT_TRUE(saveNumberedScreenshot(dir.string(), shown, path, error)) << error;
+    EXPECT_EQ(fs::path(path).filename(), "raylab-0003.png");
+    EXPECT_TRUE(fs::exists(dir / "raylab-0003.json"));
+    std::ifstream mine(dir / "raylab-0001.png");
+    std::string text((std::istreambuf_iterator<char>(mine)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text, "not mine");
+    Rgba8Image back;
+    std::map<std::string, std::string> chunks;
+    ASSERT_TRUE(readPng(path, back, error, &chunks)) << error;
+    EXPECT_EQ(back.pixels, shown.image.pixels);
+    RenderSettings fromChunk;
+    ASSERT_TRUE(settingsFromJson(chunks.at(kSettingsChunk), fromChunk, error)) << error;
+    EXPECT_EQ(fromChunk.width, 2);
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) {
+        ++files;
+    }
+    EXPECT_EQ(files, 4u); // no temporary file left
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace raylab::viewer
