@@ -1,9 +1,20 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds in Release with warnings as errors, and runs every test
-# (unit, command-line and the viewer's end-to-end tests under Xvfb) with ctest.
+# Installs what is missing, builds in Release with warnings as errors, and runs every test with
+# ctest: unit tests, the command-line tests and the viewer's end-to-end tests in a real window
+# under Xvfb. Then builds the same tests (without the viewer, whose GL driver is not
+# instrumented) with ThreadSanitizer and runs them again.
+# RAYLAB_SKIP_TSAN=1 skips the second pass.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+jobs=$(nproc)
+
 cmake --preset release >/dev/null
-cmake --build --preset release -j"$(nproc)"
-ctest --preset release -j"$(nproc)"
+cmake --build --preset release -j"$jobs"
+ctest --preset release -j"$jobs"
+
+if [ "${RAYLAB_SKIP_TSAN:-0}" != 1 ]; then
+    cmake --preset tsan >/dev/null
+    cmake --build --preset tsan -j"$jobs"
+    ctest --preset tsan -j"$jobs"
+fi
