@@ -75,7 +75,8 @@ void printText(std::ostream& out, const BenchReport& r) {
         << " skipped), " << r.width << "x" << r.height << ", " << r.primaryRays << " primary + "
         << r.shadowRays << " shadow rays, best of " << r.frames << " frames\n";
     out << "raylab BVH: " << r.traversal << ", depth " << r.bvhDepth << ", "
-        << format("%.2f", static_cast<double>(r.bvhBytes) / (1024.0 * 1024.0)) << " MiB\n";
+        << format("%.2f", static_cast<double>(r.bvhBytes) / (1024.0 * 1024.0)) << " MiB, "
+        << r.leafReferences << " leaf triangles\n";
     printFigures(out, "raylab", r, r.raylab);
     if (!r.hasEmbree) {
         out << "Embree: " << r.embreeAbsent << "\n";
@@ -98,7 +99,8 @@ void printJson(std::ostream& out, const BenchReport& r) {
         << ", \"shadow_rays\": " << r.shadowRays << ",\n \"raylab\": ";
     jsonFigures(out, r, r.raylab);
     out << ",\n \"bvh\": {\"traversal\": " << quoted(r.traversal) << ", \"depth\": " << r.bvhDepth
-        << ", \"memory_bytes\": " << r.bvhBytes << "}";
+        << ", \"memory_bytes\": " << r.bvhBytes << ", \"leaf_triangles\": " << r.leafReferences
+        << "}";
     if (r.hasEmbree) {
         out << ",\n \"embree\": ";
         jsonFigures(out, r, r.embree);

@@ -27,7 +27,8 @@ struct BenchReport {
     std::size_t primaryRays = 0, shadowRays = 0;
     std::size_t bvhBytes = 0;
     int bvhDepth = 0;
-    std::string traversal; // "8-wide AVX2" or "scalar binary"
+    std::size_t leafReferences = 0; // leaf triangles, pre-split copies included
+    std::string traversal;          // "8-wide AVX2" or "scalar binary"
     TracerFigures raylab;
     bool hasEmbree = false;
     std::string embreeAbsent = "not built in"; // why there are no Embree figures

@@ -166,6 +166,7 @@ int run(int argc, char** argv) {
     report.skipped = bvh.skippedTriangles;
     report.bvhBytes = bvh.memoryBytes();
     report.bvhDepth = bvh.depth();
+    report.leafReferences = bvh.leafReferences;
     report.traversal = bvh.wideNodes.empty() ? "scalar binary" : "8-wide AVX2";
 
     // The workload: primary rays, raylab's hits (untimed), then their shadow rays.

@@ -15,7 +15,8 @@
 namespace raylab {
 
 // One node, 32 bytes. An inner node (count == 0) has its two children at nodes[index] and
-// nodes[index + 1]; a leaf (count > 0) holds triangles [index, index + count) of Bvh::triangles.
+// nodes[index + 1]; a leaf (count > 0) holds leaf triangles [index, index + count) (see
+// Bvh::triangles for where they are stored).
 struct BvhNode {
     glm::vec3 lower{0.0f};
     uint32_t index = 0;
@@ -33,13 +34,20 @@ struct BvhTriangle {
 
 struct Bvh {
     std::vector<BvhNode> nodes; // nodes[0] is the root; empty for a scene with no valid triangle
-    std::vector<BvhTriangle> triangles; // leaf order
-    std::size_t skippedTriangles = 0;   // invalid ones (non-finite or zero area), never hit
+    // The leaf triangles, in leaf order, when there is no SIMD form. With the SIMD form, the
+    // triangles are kept once, in triangleBlocks: this is empty, and leaf triangle i of a binary
+    // leaf is lane i % 8 of triangleBlocks[i / 8] (leafTriangle() reads either).
+    std::vector<BvhTriangle> triangles;
+    std::size_t skippedTriangles = 0; // invalid ones (non-finite or zero area), never hit
+    std::size_t leafReferences = 0;   // leaf triangles: valid triangles plus pre-split copies
 
     // The SIMD form (bvh_wide.h), built when the CPU runs AVX2 and BvhBuildOptions::simd is set.
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.
     std::vector<BvhWideNode> wideNodes;           // wideNodes[0] is the root
     std::vector<BvhTriangleBlock> triangleBlocks; // leaf order
+
+    // Leaf triangle i of a binary leaf (BvhNode::index <= i < index + count).
+    BvhTriangle leafTriangle(uint32_t i) const;
 
     std::size_t memoryBytes() const;
     int depth() const;
@@ -50,6 +58,9 @@ struct BvhBuildOptions {
     int binCount = 16;   // SAH bins per axis
     int threads = 0;     // 0 = every hardware thread; the result does not depend on it
     bool simd = true;    // also build the 8-wide form when the CPU has AVX2
+    // Extra references for pre-split triangles (bvh_presplit.h), as a fraction of the valid
+    // triangles; 0 = none. Triangles of similar shape and size get none whatever the budget.
+    float presplitBudget = 0.5f;
 };
 
 // True when this CPU can run the AVX2 traversal.

@@ -11,6 +11,7 @@
 #include "bvh.h"
 #include "bvh_binning.h"
 #include "bvh_collapse.h"
+#include "bvh_presplit.h"
 #include "parallel_tiles.h"
 
 #include <algorithm>
@@ -217,6 +218,10 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         return bvh;
     }
 
+    // Split boxes are widened by 2^-21 of the largest coordinate (several ulps of any vertex
+    // coordinate), and node boxes by 2^-19 below.
+    presplitRecords(scene, options.presplitBudget, std::ldexp(std::max(magnitude, 1e-30f), -21),
+                    records);
     const Builder builder(records, options);
     const auto total = static_cast<uint32_t>(records.size());
     bvh.nodes.reserve(2 * records.size());
@@ -255,6 +260,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     // largest coordinate is far above both errors and far below any visible size.
     padBounds(bvh.nodes, std::ldexp(std::max(magnitude, 1e-30f), -19));
 
+    bvh.leafReferences = records.size();
     bvh.triangles.resize(records.size());
     for (std::size_t i = 0; i < records.size(); ++i) {
         const Triangle& t = scene.triangles[records[i].sceneIndex];
@@ -270,6 +276,23 @@ std::size_t Bvh::memoryBytes() const {
     return nodes.capacity() * sizeof(BvhNode) + triangles.capacity() * sizeof(BvhTriangle) +
            wideNodes.capacity() * sizeof(BvhWideNode) +
            triangleBlocks.capacity() * sizeof(BvhTriangleBlock);
+}
+
+BvhTriangle Bvh::leafTriangle(uint32_t i) const {
+    if (!triangles.empty()) {
+        return triangles[i];
+    }
+    const BvhTriangleBlock& block = triangleBlocks[i / kWideLanes];
+    const uint32_t lane = i % kWideLanes;
+    BvhTriangle t{};
+    glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
+    for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) {
+            (*v[k])[a] = block.vertex[k][a][lane];
+        }
+    }
+    t.sceneIndex = block.sceneIndex[lane];
+    return t;
 }
 
 int Bvh::depth() const {

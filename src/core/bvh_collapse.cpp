@@ -22,7 +22,8 @@ float area(const BvhNode& n) { return Aabb{n.lower, n.upper}.area(); }
 
 class Collapser {
 public:
-    explicit Collapser(Bvh& bvh) : bvh_(bvh), ranges_(bvh.nodes.size()) {
+    explicit Collapser(Bvh& bvh)
+        : bvh_(bvh), ranges_(bvh.nodes.size()), slotOf_(bvh.triangles.size(), 0) {
         // Children always follow their parent, so a backwards pass sees children first.
         for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
             const BvhNode& n = bvh.nodes[i];
@@ -133,6 +134,10 @@ private:
                     }
                 }
                 block.sceneIndex[lane] = t.sceneIndex;
+                if (i == first + static_cast<uint32_t>(lane)) {
+                    slotOf_[i] = static_cast<uint32_t>(bvh_.triangleBlocks.size()) * kWideLanes +
+                                 static_cast<uint32_t>(lane);
+                }
             }
             bvh_.triangleBlocks.push_back(block);
             ++blocks;
@@ -142,10 +147,24 @@ private:
 
     Bvh& bvh_;
     std::vector<Range> ranges_;
-    bool overflow_ = false; // a leaf or the block count does not fit a child reference
+    std::vector<uint32_t> slotOf_; // leaf triangle index -> its lane in triangleBlocks
+    bool overflow_ = false;        // a leaf or the block count does not fit a child reference
 
 public:
     bool overflowed() const { return overflow_; }
+
+    // Points the binary leaves at the blocks' lanes and drops the binary triangle copies. A
+    // binary leaf lies inside one wide leaf, whose blocks hold its triangles in leaf order with
+    // padding only after the last one, so its triangles stay contiguous slots.
+    void shareTriangles() {
+        for (BvhNode& node : bvh_.nodes) {
+            if (node.isLeaf()) {
+                node.index = slotOf_[node.index];
+            }
+        }
+        bvh_.triangles.clear();
+        bvh_.triangles.shrink_to_fit();
+    }
 };
 
 } // namespace
@@ -161,6 +180,8 @@ void buildWideBvh(Bvh& bvh) {
     if (collapser.overflowed() || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
         bvh.wideNodes.clear();
         bvh.triangleBlocks.clear();
+    } else {
+        collapser.shareTriangles();
     }
     bvh.wideNodes.shrink_to_fit();
     bvh.triangleBlocks.shrink_to_fit();

@@ -72,7 +72,7 @@ Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
         bvh, BoxRay(ray), [&] { return limit; },
         [&](const BvhNode& leaf) {
             for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
-                const BvhTriangle& tri = bvh.triangles[i];
+                const BvhTriangle tri = bvh.leafTriangle(i);
                 float t, u, v;
                 if (intersectTriangle(wray, tri.v0, tri.v1, tri.v2, t, u, v) &&
                     (t < best.t || (t == best.t && tri.sceneIndex < best.triangle))) {
@@ -95,7 +95,7 @@ bool anyHitScalar(const Bvh& bvh, const Ray& ray) {
         bvh, BoxRay(ray), [&] { return ray.tMax; },
         [&](const BvhNode& leaf) {
             for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
-                const BvhTriangle& tri = bvh.triangles[i];
+                const BvhTriangle tri = bvh.leafTriangle(i);
                 float t, u, v;
                 if (intersectTriangle(wray, tri.v0, tri.v1, tri.v2, t, u, v)) {
                     found = true;

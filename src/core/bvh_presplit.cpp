@@ -1,0 +1,124 @@
+#include "bvh_presplit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace raylab {
+
+namespace {
+
+// Box surface not explained by the triangle itself (a flat triangle's box has at least twice
+// its area): the part of the box that rays hit without hitting the triangle.
+float waste(const Triangle& t, const Aabb& box) {
+    const float triangleArea = 0.5f * glm::length(glm::cross(t.v1 - t.v0, t.v2 - t.v0));
+    return std::max(0.0f, box.area() - 2.0f * triangleArea);
+}
+
+// The boxes of the parts of triangle t inside `box` on either side of the plane
+// x[axis] = position, each widened by slack and then clipped to `box`.
+void splitBox(const Triangle& t, const Aabb& box, int axis, float position, float slack, Aabb& left,
+              Aabb& right) {
+    const glm::vec3 v[3] = {t.v0, t.v1, t.v2};
+    left = Aabb{};
+    right = Aabb{};
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec3& p = v[i];
+        const glm::vec3& q = v[(i + 1) % 3];
+        if (p[axis] <= position) {
+            left.extend(p);
+        }
+        if (p[axis] >= position) {
+            right.extend(p);
+        }
+        if ((p[axis] < position && q[axis] > position) ||
+            (p[axis] > position && q[axis] < position)) {
+            glm::vec3 x = p + (position - p[axis]) / (q[axis] - p[axis]) * (q - p);
+            x[axis] = position;
+            left.extend(x);
+            right.extend(x);
+        }
+    }
+    for (Aabb* b : {&left, &right}) {
+        if (b->empty()) {
+            continue;
+        }
+        b->lower = glm::max(b->lower - glm::vec3(slack), box.lower);
+        b->upper = glm::min(b->upper + glm::vec3(slack), box.upper);
+    }
+    left.upper[axis] = std::min(left.upper[axis], position);
+    right.lower[axis] = std::max(right.lower[axis], position);
+}
+
+int longestAxis(const Aabb& b) {
+    const glm::vec3 e = b.extent();
+    return e.x >= e.y ? (e.x >= e.z ? 0 : 2) : (e.y >= e.z ? 1 : 2);
+}
+
+// Splits t's box into up to pieces + 1 boxes, always halving the largest one along its
+// longest axis, and appends them as references of scene triangle `index`.
+void splitTriangle(const Triangle& t, uint32_t index, const Aabb& box, uint32_t pieces, float slack,
+                   std::vector<Aabb>& work, std::vector<PrimRecord>& out) {
+    work.assign(1, box);
+    for (uint32_t n = 0; n < pieces; ++n) {
+        std::size_t largest = 0;
+        for (std::size_t i = 1; i < work.size(); ++i) {
+            if (work[i].area() > work[largest].area()) {
+                largest = i;
+            }
+        }
+        const Aabb b = work[largest];
+        const int axis = longestAxis(b);
+        const float position = 0.5f * (b.lower[axis] + b.upper[axis]);
+        if (!(position > b.lower[axis] && position < b.upper[axis])) {
+            break; // too small to split in float
+        }
+        Aabb left, right;
+        splitBox(t, b, axis, position, slack, left, right);
+        if (left.empty() || right.empty()) {
+            work[largest] = left.empty() ? right : left;
+            continue;
+        }
+        work[largest] = left;
+        work.push_back(right);
+    }
+    for (const Aabb& b : work) {
+        out.push_back({b.lower, index, b.upper});
+    }
+}
+
+} // namespace
+
+void presplitRecords(const Scene& scene, float budget, float slack,
+                     std::vector<PrimRecord>& records) {
+    if (records.empty() || !(budget > 0.0f)) {
+        return;
+    }
+    std::vector<float> priority(records.size());
+    double total = 0.0;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const Aabb box{records[i].lower, records[i].upper};
+        priority[i] = std::cbrt(waste(scene.triangles[records[i].sceneIndex], box));
+        total += priority[i];
+    }
+    if (!(total > 0.0)) {
+        return;
+    }
+    const double scale = static_cast<double>(budget) * static_cast<double>(records.size()) / total;
+    std::vector<PrimRecord> out;
+    out.reserve(records.size() +
+                static_cast<std::size_t>(budget * static_cast<float>(records.size())) + 16);
+    std::vector<Aabb> work;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const auto pieces = static_cast<uint32_t>(std::min(64.0, scale * priority[i]));
+        if (pieces == 0) {
+            out.push_back(records[i]);
+            continue;
+        }
+        splitTriangle(scene.triangles[records[i].sceneIndex], records[i].sceneIndex,
+                      Aabb{records[i].lower, records[i].upper}, pieces, slack, work, out);
+    }
+    records.swap(out);
+}
+
+} // namespace raylab
