@@ -8,7 +8,7 @@ packages=(
     libglm-dev libassimp-dev libpng-dev nlohmann-json3-dev libopenexr-dev
     libgtest-dev libgmock-dev libembree-dev
     libglfw3-dev libimgui-dev python3-glad libgl-dev
-    xvfb xauth xdotool libgl1-mesa-dri
+    xvfb xauth xdotool libgl1-mesa-dri openbox
 )
 
 missing=()

@@ -50,4 +50,10 @@ void GlWindow::framebufferSize(int& width, int& height) const {
     glfwGetFramebufferSize(window_, &width, &height);
 }
 
+bool GlWindow::minimised() const {
+    int width = 0, height = 0;
+    framebufferSize(width, height);
+    return width <= 0 || height <= 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0;
+}
+
 } // namespace raylab::viewer

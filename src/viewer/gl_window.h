@@ -23,6 +23,9 @@ public:
     // The drawable size in pixels (differs from the window size on high-DPI screens); 0 x 0
     // while minimised.
     void framebufferSize(int& width, int& height) const;
+    // True while the window is iconified (on X11 its framebuffer keeps its size) or its
+    // framebuffer is empty (0 x 0, as minimised windows have elsewhere): nothing to draw.
+    bool minimised() const;
 
 private:
     GLFWwindow* window_ = nullptr;

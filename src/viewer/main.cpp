@@ -1,6 +1,7 @@
 // raylab: the interactive viewer. Parses the command line, loads the scene (a bad one ends here
 // with one line and exit code 1), and runs the window (viewer_app.h).
 
+#include "io/atomic_file.h"
 #include "loaded_scene.h"
 #include "viewer_app.h"
 #include "viewer_options.h"
@@ -21,6 +22,10 @@ int main(int argc, char** argv) {
     if (command.help) {
         std::fputs(viewerUsage().c_str(), stdout);
         return 0;
+    }
+    if (std::string why; !options.stats.empty() && !checkWritable(options.stats, why)) {
+        std::fprintf(stderr, "raylab: %s\n", why.c_str());
+        return 1;
     }
     SceneLoadResult loaded = loadSceneForViewer(command.scene);
     if (!loaded.scene) {

@@ -169,22 +169,25 @@ void statisticsSection(const PanelView& view) {
     }
 }
 
-void sceneSection(PanelState& state, const PanelView& view, PanelActions& actions) {
-    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
-        return;
-    }
-    ImGui::TextWrapped("%s", view.sceneName.c_str());
+// The path field and its Open button, on one row at a fixed place (scripts click the field),
+// then the scene shown.
+void sceneRow(PanelState& state, const PanelView& view, PanelActions& actions) {
+    const float openWidth =
+        ImGui::CalcTextSize("Loading...").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    ImGui::SetNextItemWidth(-(openWidth + ImGui::GetStyle().ItemInnerSpacing.x));
     const bool enter =
         ImGui::InputText("##path", &state.scenePath, ImGuiInputTextFlags_EnterReturnsTrue);
-    ImGui::SameLine();
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("a mesh file (OBJ, PLY, glTF, ...) or cornell; Return opens it");
+    }
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::BeginDisabled(view.loading);
-    if (ImGui::Button(view.loading ? "Loading..." : "Open") || (enter && !view.loading)) {
+    if (ImGui::Button(view.loading ? "Loading..." : "Open", ImVec2(openWidth, 0.0f)) ||
+        (enter && !view.loading)) {
         actions.openScene = true;
     }
     ImGui::EndDisabled();
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("a mesh file (OBJ, PLY, glTF, ...) or cornell");
-    }
+    ImGui::TextWrapped("scene: %s", view.sceneName.c_str());
 }
 
 } // namespace
@@ -199,10 +202,12 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
     ImGui::Begin("raylab", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
     ImGui::PushItemWidth(-110.0f); // room for the labels
 
-    // First, so its place is fixed: scripts click it at (kPanelX + 100, kPanelY + 36).
+    // First, so their places are fixed: scripts click the button at (kPanelX + 100,
+    // kPanelY + 36) and the path field below it.
     if (ImGui::Button("Save screenshot (F12)", ImVec2(-1.0f, 0.0f))) {
         actions.screenshot = true;
     }
+    sceneRow(state, view, actions);
     if (!state.status.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, state.statusIsError ? kRed : kGreen);
         ImGui::TextWrapped("%s", state.status.c_str());
@@ -228,7 +233,6 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
         ImGui::TextWrapped("refused: %s", state.refused.c_str());
         ImGui::PopStyleColor();
     }
-    sceneSection(state, view, actions);
     ImGui::PopItemWidth();
     ImGui::End();
     return actions;

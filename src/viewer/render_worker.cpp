@@ -112,7 +112,7 @@ uint64_t RenderWorker::submit(const RenderJob& job) {
     uint64_t serial = 0;
     {
         std::lock_guard lock(mutex_);
-        if (!samePicture(job, job_)) {
+        if (!samePicture(job, job_) && !inPreview_) {
             cancel_.store(true);
         }
         job_ = job;
@@ -120,6 +120,11 @@ uint64_t RenderWorker::submit(const RenderJob& job) {
     }
     wake_.notify_all();
     return serial;
+}
+
+PassTotals RenderWorker::totals() const {
+    std::lock_guard lock(mutex_);
+    return totals_;
 }
 
 bool RenderWorker::takeLatest(ShownImage& out) {
@@ -149,6 +154,19 @@ void RenderWorker::run() {
         std::lock_guard lock(mutex_);
         picture.serial = ++published;
         std::swap(latest_, picture);
+    };
+    const auto setInPreview = [&](bool running) {
+        std::lock_guard lock(mutex_);
+        inPreview_ = running;
+    };
+    // Counts a pass (or preview) that took `seconds`, or was cancelled when `seconds` is < 0.
+    const auto tally = [&](Tally PassTotals::*which, double seconds) {
+        std::lock_guard lock(mutex_);
+        if (seconds < 0.0) {
+            ++totals_.cancelled;
+        } else {
+            (totals_.*which).add(seconds);
+        }
     };
 
     for (;;) {
@@ -190,11 +208,16 @@ void RenderWorker::run() {
                 previewSums.assign(pixelCount(small), glm::vec3(0.0f));
                 RayCounts counts;
                 const auto start = Clock::now();
-                if (!accumulatePass(loaded.scene, loaded.bvh, small, 0, previewSums, &counts,
-                                    pass)) {
+                setInPreview(true);
+                const bool finished =
+                    accumulatePass(loaded.scene, loaded.bvh, small, 0, previewSums, &counts, pass);
+                setInPreview(false);
+                if (!finished) {
+                    tally(&PassTotals::previews, -1.0);
                     continue;
                 }
                 const double seconds = secondsSince(start);
+                tally(&PassTotals::previews, seconds);
                 secondsPerPixel = seconds / static_cast<double>(pixelCount(small));
                 previewRgba.resize(4 * pixelCount(small));
                 toRgba8(previewSums, 1.0f, settings.display, settings.exposure, previewRgba);
@@ -219,9 +242,11 @@ void RenderWorker::run() {
             const auto start = Clock::now();
             if (!accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, pass)) {
                 sums.clear(); // partly updated: worthless, whatever the next job is
+                tally(&PassTotals::passes, -1.0);
                 continue;
             }
             seconds = secondsSince(start);
+            tally(&PassTotals::passes, seconds);
             secondsPerPixel = seconds / static_cast<double>(pixelCount(settings));
             ++samples;
         }

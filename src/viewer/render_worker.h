@@ -8,10 +8,13 @@
 // After a restart, when the last passes show a full pass would take longer than a UI frame
 // budget, the thread first renders a coarse preview (1/k resolution, upscaled by pixel
 // replication) so that moving the camera stays fluid; the picture sharpens when the camera stops.
+// A preview in flight is not cancelled by a new job (it takes about one budget): it is shown, and
+// the newest job starts after it, so a camera that keeps moving still gets a picture per preview.
 //
 // Threads: accumulatePass runs settings.threads workers and this thread is one of them.
 
 #include "loaded_scene.h"
+#include "run_stats.h"
 #include "shown_image.h"
 
 #include <atomic>
@@ -55,16 +58,21 @@ public:
     // `out` held is recycled). Returns whether it did.
     bool takeLatest(ShownImage& out);
 
+    // The passes and previews finished or cancelled so far.
+    PassTotals totals() const;
+
 private:
     void run();
 
     const double previewBudgetSeconds_;
-    std::mutex mutex_;
+    mutable std::mutex mutex_;
     std::condition_variable wake_;
     RenderJob job_;          // guarded by mutex_
     uint64_t jobSerial_ = 0; // guarded by mutex_
     bool quit_ = false;      // guarded by mutex_
+    bool inPreview_ = false; // guarded by mutex_: a preview pass is running
     ShownImage latest_;      // guarded by mutex_
+    PassTotals totals_;      // guarded by mutex_
     std::atomic<bool> cancel_{false};
     std::thread thread_; // last: starts after every member above exists
 };

@@ -16,8 +16,10 @@
 #include "image_quad.h"
 #include "imgui_layer.h"
 #include "input.h"
+#include "key_relay.h"
 #include "panel.h"
 #include "render_worker.h"
+#include "run_stats.h"
 #include "scene_loader.h"
 #include "screenshot.h"
 #include "settings_edit.h"
@@ -95,6 +97,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         std::fprintf(stderr, "raylab: %s\n", gui.ok() ? error.c_str() : "cannot start Dear ImGui");
         return 1;
     }
+    KeyRelay keys(window.handle()); // in front of ImGui's key callbacks
     SceneLoader loader;
     RenderWorker worker; // declared last: stopped and joined first
 
@@ -123,6 +126,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     const auto framePeriod = std::chrono::duration<double>(1.0 / kFramesPerSecond);
     auto previousFrameTime = Clock::now();
     auto nextFrame = previousFrameTime;
+    RunStats stats;
+    bool wasMinimised = false;
+    auto minimisedSince = previousFrameTime;
 
     for (;;) {
         // Pace the loop; events (collected by the callbacks) wake it early, but frames stay paced.
@@ -152,16 +158,29 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
 
         int fbWidth = 0, fbHeight = 0;
         window.framebufferSize(fbWidth, fbHeight);
-        if (fbWidth <= 0 || fbHeight <= 0) {
+        const bool minimised = window.minimised();
+        if (minimised != wasMinimised) {
+            const auto now = Clock::now();
+            if (minimised) {
+                minimisedSince = now;
+            } else {
+                stats.minimisedSeconds +=
+                    std::chrono::duration<double>(now - minimisedSince).count();
+                previousFrameTime = now; // the next interval starts now, not before minimising
+            }
+            wasMinimised = minimised;
+        }
+        if (minimised) {
             if (quit) {
                 break;
             }
-            continue; // minimised: nothing to draw, the tracer keeps its last job
+            continue; // nothing to draw; the tracer keeps its job and stops at the sample cap
         }
 
         gui.beginFrame();
         if (worker.takeLatest(shown)) {
             quad.upload(shown.image);
+            stats.uploads.add(quad.lastUploadSeconds());
             if (shown.passSeconds > 0.0) {
                 passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
             }
@@ -221,6 +240,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             screenshots = 0;
         }
         gui.endFrame();
+        keys.frameEnded();
         if (finalFrame && !options.readback.empty()) {
             if (!writePng(options.readback, readFramebuffer(fbWidth, fbHeight), error)) {
                 std::fprintf(stderr, "raylab: %s\n", error.c_str());
@@ -230,14 +250,35 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         glfwSwapBuffers(window.handle());
         ++framesShown;
         const auto now = Clock::now();
-        frameMs.push(static_cast<float>(
-            std::chrono::duration<double>(now - previousFrameTime).count() * 1000.0));
+        const double interval = std::chrono::duration<double>(now - previousFrameTime).count();
+        frameMs.push(static_cast<float>(interval * 1000.0));
         previousFrameTime = now;
+        if (stats.framesShown++ > 0) { // the first swap starts the clock
+            stats.frameIntervals.add(interval);
+            stats.shownSeconds += interval;
+            stats.slowFrames += interval > 1.0 / 30.0 ? 1 : 0;
+        }
         if (finalFrame) {
             break;
         }
     }
 
+    if (wasMinimised) {
+        stats.minimisedSeconds +=
+            std::chrono::duration<double>(Clock::now() - minimisedSince).count();
+    }
+    if (!options.stats.empty()) {
+        stats.tracer = worker.totals();
+        stats.width = shown.image.width;
+        stats.height = shown.image.height;
+        stats.samples = shown.preview ? 0 : shown.settings.samplesPerPixel;
+        stats.scene = scene->source;
+        stats.triangles = scene->scene.triangles.size();
+        if (!writeRunStats(options.stats, stats, error)) {
+            std::fprintf(stderr, "raylab: %s\n", error.c_str());
+            exitCode = 1;
+        }
+    }
     if (!command.screenshot.empty()) {
         if (shown.image.width > 0 && !shown.preview) {
             if (!saveScreenshot(command.screenshot, shown, error)) {

@@ -36,6 +36,12 @@ int parseViewerOptions(int argc, const char* const* argv, ViewerOptions& options
                 return 2;
             }
             options.readback = argv[++i];
+        } else if (i > 0 && arg == "--stats") {
+            if (i + 1 >= argc) {
+                error = "--stats needs a file name";
+                return 2;
+            }
+            options.stats = argv[++i];
         } else if (i > 0 && arg == "--resolution-scale") {
             char* end = nullptr;
             const float scale = i + 1 < argc ? std::strtof(argv[i + 1], &end) : 0.0f;
@@ -78,6 +84,8 @@ std::string viewerUsage() {
            "  --resolution-scale S  render at the window's size times S, 0.1..1 (default 1)\n"
            "  --readback FILE    test mode: with --frames, also save what the window shows (read\n"
            "                     back from the GL framebuffer) of the last frame as PNG\n"
+           "  --stats FILE       on quitting, write the window's frame rate and the tracer's pass\n"
+           "                     times (JSON) to FILE\n"
            "The sample cap is --spp (default " +
            std::to_string(kDefaultSampleCap) +
            "). With --frames N and --screenshot or --readback, the viewer shows at least N frames\n"

@@ -1,0 +1,53 @@
+#pragma once
+// What a viewer run measured, written by --stats FILE as one JSON object when the viewer quits:
+// frame rates of the window and pass times of the tracer, without any timed test.
+
+#include <cstdint>
+#include <string>
+
+namespace raylab::viewer {
+
+// count, sum, min and max of a series of measurements (seconds unless named otherwise).
+struct Tally {
+    uint64_t count = 0;
+    double sum = 0.0;
+    double min = 0.0; // 0 while count is 0
+    double max = 0.0;
+
+    void add(double value);
+    double mean() const { return count == 0 ? 0.0 : sum / static_cast<double>(count); }
+};
+
+// The render thread's work so far.
+struct PassTotals {
+    Tally passes;           // full-resolution passes that finished (one sample per pixel each)
+    Tally previews;         // coarse previews that finished
+    uint64_t cancelled = 0; // passes or previews cancelled by a new job
+};
+
+struct RunStats {
+    uint64_t framesShown = 0;      // buffer swaps
+    double shownSeconds = 0.0;     // from the first swap to the last, minimised time excluded
+    double minimisedSeconds = 0.0; // wall clock spent minimised (nothing drawn)
+    Tally frameIntervals;          // swap to swap, minimised time excluded
+    uint64_t slowFrames = 0;       // intervals longer than 1/30 s
+    Tally uploads;                 // texture uploads of new pictures (CPU side)
+    PassTotals tracer;
+    // The last picture shown: its render resolution and samples per pixel (0 for a preview).
+    int width = 0;
+    int height = 0;
+    int samples = 0;
+    std::string scene;
+    uint64_t triangles = 0;
+};
+
+// The JSON text --stats writes: frames_shown, seconds, window_fps, frame_ms {mean, max},
+// frames_over_33ms, minimised_seconds, upload_ms {count, mean, max}, passes, pass_ms {mean, min,
+// max}, previews, preview_ms {mean, min, max}, cancelled_passes, samples, render_width,
+// render_height, scene, triangles. Times in milliseconds unless named seconds.
+std::string runStatsJson(const RunStats& stats);
+
+// Writes runStatsJson to `path` atomically; false with a one-line error.
+bool writeRunStats(const std::string& path, const RunStats& stats, std::string& error);
+
+} // namespace raylab::viewer

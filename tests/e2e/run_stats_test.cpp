@@ -1,0 +1,54 @@
+// RunStats: the --stats file's numbers and their units.
+
+#include "run_stats.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace raylab::viewer {
+namespace {
+
+TEST(ViewerRunStats, TallyKeepsCountSumMinMax) {
+    Tally tally;
+    EXPECT_EQ(tally.mean(), 0.0);
+    tally.add(0.5);
+    tally.add(0.25);
+    tally.add(2.0);
+    EXPECT_EQ(tally.count, 3u);
+    EXPECT_DOUBLE_EQ(tally.mean(), 2.75 / 3.0);
+    EXPECT_EQ(tally.min, 0.25);
+    EXPECT_EQ(tally.max, 2.0);
+}
+
+TEST(ViewerRunStats, JsonHasRatesInFramesPerSecondAndTimesInMilliseconds) {
+    RunStats stats;
+    stats.framesShown = 61;
+    stats.shownSeconds = 2.0;
+    stats.frameIntervals.add(0.02);
+    stats.frameIntervals.add(0.04);
+    stats.slowFrames = 1;
+    stats.tracer.passes.add(0.010);
+    stats.tracer.passes.add(0.030);
+    stats.tracer.cancelled = 4;
+    stats.width = 640;
+    stats.height = 360;
+    stats.samples = 2;
+    stats.scene = "a \"quoted\" path.obj";
+    stats.triangles = 30;
+    const nlohmann::json json = nlohmann::json::parse(runStatsJson(stats));
+    EXPECT_EQ(json["frames_shown"], 61);
+    EXPECT_DOUBLE_EQ(json["window_fps"].get<double>(), 30.0);
+    EXPECT_DOUBLE_EQ(json["frame_ms"]["max"].get<double>(), 40.0);
+    EXPECT_EQ(json["frames_over_33ms"], 1);
+    EXPECT_EQ(json["passes"], 2);
+    EXPECT_DOUBLE_EQ(json["pass_ms"]["mean"].get<double>(), 20.0);
+    EXPECT_DOUBLE_EQ(json["pass_ms"]["min"].get<double>(), 10.0);
+    EXPECT_EQ(json["previews"], 0);
+    EXPECT_EQ(json["cancelled_passes"], 4);
+    EXPECT_EQ(json["render_width"], 640);
+    EXPECT_EQ(json["render_height"], 360);
+    EXPECT_EQ(json["scene"], "a \"quoted\" path.obj");
+}
+
+} // namespace
+} // namespace raylab::viewer
