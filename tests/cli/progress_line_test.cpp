@@ -1,0 +1,93 @@
+// raylab-render's progress line: shown on a terminal once a render has run for a second, erased
+// at the end, and never written when stderr is not a terminal (render_cli_test checks that stderr
+// then holds exactly the summary line).
+
+#include "temp_dir_test.h"
+
+#include <cerrno>
+#include <gtest/gtest.h>
+#include <pty.h>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+// Runs raylab-render with its stdout and stderr on a new pseudo-terminal; returns what the
+// terminal received and sets exitCode.
+std::string runOnTerminal(std::vector<std::string> args, int& exitCode) {
+    args.insert(args.begin(), RAYLAB_RENDER_EXE);
+    std::vector<char*> argv;
+    for (std::string& a : args) {
+        argv.push_back(a.data());
+    }
+    argv.push_back(nullptr);
+    int terminal = -1;
+    const pid_t pid = forkpty(&terminal, nullptr, nullptr, nullptr);
+    if (pid == 0) {
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    EXPECT_GT(pid, 0);
+    std::string received;
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = read(terminal, buffer, sizeof buffer);
+        if (n > 0) {
+            received.append(buffer, static_cast<std::size_t>(n));
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else {
+            break; // EOF, or EIO once the child has closed its side
+        }
+    }
+    close(terminal);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return received;
+}
+
+using ProgressLine = test::TempDirTest;
+
+TEST_F(ProgressLine, ShownOnATerminalForARenderLongerThanASecond) {
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "a render this long takes minutes under a sanitizer";
+#endif
+    // About 40 million primary rays on one thread: several seconds on any machine of today.
+    int exitCode = -1;
+    const std::string shown = runOnTerminal({"--width", "1000", "--height", "1000", "--spp", "40",
+                                             "--threads", "1", "-o", path("slow.png")},
+                                            exitCode);
+    ASSERT_EQ(exitCode, 0) << shown;
+    const std::size_t first = shown.find("\rrendering ");
+    ASSERT_NE(first, std::string::npos) << shown;
+    EXPECT_NE(shown.find('%', first), std::string::npos);
+    // Percentages rise, and the line is erased before the summary.
+    int last = -1;
+    for (std::size_t at = first; (at = shown.find("\rrendering ", at)) != std::string::npos; ++at) {
+        const int percent = std::stoi(shown.substr(at + 11));
+        EXPECT_GE(percent, last);
+        EXPECT_LE(percent, 100);
+        last = percent;
+    }
+    const std::size_t summary = shown.find("raylab-render: 1000x1000, 40 spp");
+    ASSERT_NE(summary, std::string::npos) << shown;
+    EXPECT_GT(summary, shown.rfind("\rrendering "));
+    EXPECT_NE(shown.rfind('\r', summary), std::string::npos);
+    EXPECT_EQ(files(), std::vector<std::string>{"slow.png"});
+}
+
+TEST_F(ProgressLine, NotShownForAShortRender) {
+    int exitCode = -1;
+    const std::string shown =
+        runOnTerminal({"--width", "64", "--height", "64", "-o", path("fast.png")}, exitCode);
+    ASSERT_EQ(exitCode, 0) << shown;
+    EXPECT_EQ(shown.find("rendering"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("raylab-render: 64x64"), std::string::npos) << shown;
+}
+
+} // namespace
+} // namespace raylab
