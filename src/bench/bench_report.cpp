@@ -77,12 +77,22 @@ void printText(std::ostream& out, const BenchReport& r) {
     out << "raylab BVH: " << r.traversal << ", depth " << r.bvhDepth << ", "
         << format("%.2f", static_cast<double>(r.bvhBytes) / (1024.0 * 1024.0)) << " MiB, "
         << r.leafReferences << " leaf triangles\n";
-    printFigures(out, "raylab", r, r.raylab);
+    if (r.packets) {
+        printFigures(out, "raylab (packets)", r, r.raylab);
+        printFigures(out, "raylab (1 ray)  ", r, r.raylabSingle);
+        out << "packets / single rays: "
+            << format("%.2f", r.raylabSingle.one.bestSeconds / r.raylab.one.bestSeconds)
+            << " (1 thread), "
+            << format("%.2f", r.raylabSingle.all.bestSeconds / r.raylab.all.bestSeconds) << " ("
+            << r.threads << " threads); answers differing: " << r.packetMismatches << "\n";
+    } else {
+        printFigures(out, "raylab", r, r.raylab);
+    }
     if (!r.hasEmbree) {
         out << "Embree: " << r.embreeAbsent << "\n";
         return;
     }
-    printFigures(out, "Embree", r, r.embree);
+    printFigures(out, r.packets ? "Embree          " : "Embree", r, r.embree);
     out << "raylab / Embree: "
         << format("%.2f", r.embree.one.bestSeconds / r.raylab.one.bestSeconds) << " (1 thread), "
         << format("%.2f", r.embree.all.bestSeconds / r.raylab.all.bestSeconds) << " (" << r.threads
@@ -98,6 +108,12 @@ void printJson(std::ostream& out, const BenchReport& r) {
         << ", \"frames\": " << r.frames << ", \"primary_rays\": " << r.primaryRays
         << ", \"shadow_rays\": " << r.shadowRays << ",\n \"raylab\": ";
     jsonFigures(out, r, r.raylab);
+    out << ", \"packets\": " << (r.packets ? "true" : "false");
+    if (r.packets) {
+        out << ",\n \"raylab_single_ray\": ";
+        jsonFigures(out, r, r.raylabSingle);
+        out << ", \"packet_mismatches\": " << r.packetMismatches;
+    }
     out << ",\n \"bvh\": {\"traversal\": " << quoted(r.traversal) << ", \"depth\": " << r.bvhDepth
         << ", \"memory_bytes\": " << r.bvhBytes << ", \"leaf_triangles\": " << r.leafReferences
         << "}";

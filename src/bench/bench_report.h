@@ -29,7 +29,10 @@ struct BenchReport {
     int bvhDepth = 0;
     std::size_t leafReferences = 0; // leaf triangles, pre-split copies included
     std::string traversal;          // "8-wide AVX2" or "scalar binary"
-    TracerFigures raylab;
+    TracerFigures raylab;           // packets of 8 rays, or single rays when !packets
+    bool packets = false;
+    TracerFigures raylabSingle;       // single rays, timed in the same turns (when packets)
+    std::size_t packetMismatches = 0; // answers where packets and single rays differ (must be 0)
     bool hasEmbree = false;
     std::string embreeAbsent = "not built in"; // why there are no Embree figures
     TracerFigures embree;

@@ -3,14 +3,17 @@
 // Traces the lab's workload (one primary ray per pixel, one shadow ray per lit hit; 1280 x 720
 // unless --width/--height say otherwise) with raylab's BVH on 1 thread and on N threads, best of
 // --frames frames, and, where Embree is built in, with Embree on the same rays, then compares
-// the two's closest hits. Bench-only flags: --scalar (raylab's scalar reference traversal
-// instead of the SIMD one), --no-embree. Exit codes: 2 usage, 1 other errors or too many
-// disagreeing hits.
+// the two's closest hits. raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and,
+// in the same turns, single rays. Bench-only flags: --scalar (raylab's scalar reference
+// traversal instead of the SIMD one), --no-packets (single rays only), --no-embree. Exit codes:
+// 2 usage, 1 other errors, too many hits disagreeing with Embree, or packets and single rays
+// not giving identical answers.
 
 #include "bench_rays.h"
 #include "bench_report.h"
 #include "bench_timing.h"
 #include "core/bvh.h"
+#include "core/bvh_packet.h"
 #include "core/camera.h"
 #include "core/parallel_tiles.h"
 #include "core/scene_framing.h"
@@ -39,6 +42,9 @@ constexpr int kBenchHeight = 720;
 struct BenchFlags {
     bool scalar = false;
     bool noEmbree = false;
+    bool noPackets = false;
+    float spatialBudget = -1.0f;  // < 0: BvhBuildOptions' default
+    float presplitBudget = -1.0f; // likewise
     bool sizeGiven = false;
 };
 
@@ -51,6 +57,12 @@ BenchFlags takeBenchFlags(std::vector<const char*>& args) {
             flags.scalar = true;
         } else if (std::strcmp(arg, "--no-embree") == 0) {
             flags.noEmbree = true;
+        } else if (std::strcmp(arg, "--no-packets") == 0) {
+            flags.noPackets = true;
+        } else if (std::strncmp(arg, "--spatial-budget=", 17) == 0) {
+            flags.spatialBudget = std::stof(arg + 17);
+        } else if (std::strncmp(arg, "--presplit-budget=", 18) == 0) {
+            flags.presplitBudget = std::stof(arg + 18);
         } else {
             const std::string a = arg;
             if (a.rfind("--width", 0) == 0 || a.rfind("--height", 0) == 0) {
@@ -124,6 +136,9 @@ int run(int argc, char** argv) {
         std::cout << usage(Program::Bench)
                   << "\nraylab-bench traces 1280x720 unless --width or --height is given.\n"
                      "  --scalar                raylab's scalar reference traversal (binary BVH)\n"
+                     "  --no-packets            single rays only (no 8-ray packets)\n"
+                     "  --spatial-budget=F      BVH spatial splits: extra references, fraction\n"
+                     "  --presplit-budget=F     BVH pre-splitting: extra references, fraction\n"
                      "  --no-embree             skip Embree\n";
         return 0;
     }
@@ -156,6 +171,12 @@ int run(int argc, char** argv) {
     BvhBuildOptions buildOptions;
     buildOptions.threads = threads;
     buildOptions.simd = !flags.scalar;
+    if (flags.spatialBudget >= 0.0f) {
+        buildOptions.spatialSplitBudget = flags.spatialBudget;
+    }
+    if (flags.presplitBudget >= 0.0f) {
+        buildOptions.presplitBudget = flags.presplitBudget;
+    }
     Bvh bvh;
     report.raylab.buildSeconds = 1e30;
     for (int i = 0; i < 3; ++i) {
@@ -190,7 +211,8 @@ int run(int argc, char** argv) {
     report.primaryRays = rays.primary.size();
     report.shadowRays = rays.shadow.size();
 
-    const TileTracer raylabTile = [&](std::size_t tile) {
+    // Single rays, one by one.
+    const TileTracer singleTile = [&](std::size_t tile) {
         for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
             hits[i] = closest(rays.primary[i]);
         }
@@ -198,9 +220,35 @@ int run(int argc, char** argv) {
             occluded[j] = any(rays.shadow[j]) ? 1 : 0;
         }
     };
+    // Packets of 8 consecutive rays of a tile: 8 pixels of a row, or 8 shadow rays of
+    // neighbouring hits.
+    std::vector<Hit> packetHits(rays.primary.size());
+    std::vector<uint8_t> packetOccluded(rays.shadow.size(), 0);
+    const TileTracer packetTile = [&](std::size_t tile) {
+        const std::size_t p0 = rays.primaryOffset[tile], p1 = rays.primaryOffset[tile + 1];
+        for (std::size_t i = p0; i < p1; i += kPacketSize) {
+            const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, p1 - i));
+            closestHit8(bvh, &rays.primary[i], n, &packetHits[i]);
+        }
+        const std::size_t s1 = rays.shadowOffset[tile + 1];
+        for (std::size_t j = rays.shadowOffset[tile]; j < s1; j += kPacketSize) {
+            const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, s1 - j));
+            bool answers[kPacketSize];
+            anyHit8(bvh, &rays.shadow[j], n, answers);
+            for (int k = 0; k < n; ++k) {
+                packetOccluded[j + static_cast<std::size_t>(k)] = answers[k] ? 1 : 0;
+            }
+        }
+    };
+    const bool packets = !flags.scalar && !flags.noPackets;
+    report.packets = packets;
     // raylab and Embree take turns frame by frame, so both see the same load on a shared machine.
-    std::vector<const TileTracer*> tracers{&raylabTile};
+    std::vector<const TileTracer*> tracers{packets ? &packetTile : &singleTile};
     std::vector<TracerFigures*> figures{&report.raylab};
+    if (packets) {
+        tracers.push_back(&singleTile);
+        figures.push_back(&report.raylabSingle);
+    }
 #ifdef RAYLAB_HAVE_EMBREE
     std::unique_ptr<EmbreeTracer> embree;
     std::vector<Hit> embreeHits;
@@ -235,6 +283,15 @@ int run(int argc, char** argv) {
     }
 #endif
 
+    if (packets) {
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            report.packetMismatches += std::memcmp(&hits[i], &packetHits[i], sizeof(Hit)) != 0;
+        }
+        for (std::size_t j = 0; j < occluded.size(); ++j) {
+            report.packetMismatches += occluded[j] != packetOccluded[j] ? 1 : 0;
+        }
+    }
+
     if (cl.json) {
         printJson(std::cout, report);
     } else {
@@ -244,6 +301,11 @@ int run(int argc, char** argv) {
         std::cerr << "raylab-bench: " << report.disagreeingHits << " of " << report.primaryRays
                   << " closest hits disagree with Embree (more than 1 in " << kMaxDisagreement
                   << ")\n";
+        return 1;
+    }
+    if (report.packetMismatches != 0) {
+        std::cerr << "raylab-bench: " << report.packetMismatches
+                  << " packet answers differ from the single-ray ones\n";
         return 1;
     }
     return 0;

@@ -61,6 +61,15 @@ struct BvhBuildOptions {
     // Extra references for pre-split triangles (bvh_presplit.h), as a fraction of the valid
     // triangles; 0 = none. Triangles of similar shape and size get none whatever the budget.
     float presplitBudget = 0.5f;
+    // Spatial splits (bvh_spatial_split.h): at most this fraction of the references (after
+    // pre-splitting) in extra references (0 = none). Tried only at nodes whose best object
+    // split leaves child boxes overlapping by more than spatialSplitOverlap times the root's
+    // surface area (Stich et al.'s alpha) and spatialSplitNodeOverlap times the node's own:
+    // the second test skips the many small nodes of finely tessellated meshes, where spatial
+    // splits cost build time and gain nothing (dragon).
+    float spatialSplitBudget = 0.3f;
+    float spatialSplitOverlap = 1e-4f;
+    float spatialSplitNodeOverlap = 0.2f;
 };
 
 // True when this CPU can run the AVX2 traversal.

@@ -2,8 +2,10 @@
 //
 // Every valid triangle becomes a primitive record (its box and scene index). Nodes are split by
 // the surface area heuristic evaluated at the borders of 16 bins over the centroids' extent on
-// each axis; records are partitioned in place, so every subtree owns a contiguous range of them
-// and the final record order is the leaf order. The top of the tree is built on the calling
+// each axis (object splits), or, where the children of the best object split overlap, by a plane
+// that cuts the triangles crossing it (spatial splits, bvh_spatial_split.h), within a budget of
+// extra references. Each task owns its references; a last pass orders the leaves' references
+// so that every subtree's are contiguous. The top of the tree is built on the calling
 // thread until subtrees are small (a size threshold that depends only on the triangle count);
 // those subtrees are then built in parallel into their own node arrays and appended in a fixed
 // order, so the result is the same whatever the thread count.
@@ -12,6 +14,7 @@
 #include "bvh_binning.h"
 #include "bvh_collapse.h"
 #include "bvh_presplit.h"
+#include "bvh_spatial_split.h"
 #include "parallel_tiles.h"
 
 #include <algorithm>
@@ -30,92 +33,174 @@ constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the m
 constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
 constexpr std::size_t kMinTaskSize = 4096; // smallest subtree worth a parallel task
 
-// A range of records waiting to become the node at nodes[slot].
+// The references of a subtree waiting to become the node at nodes[slot].
 struct BuildTask {
-    uint32_t slot;
-    uint32_t begin, end;
-    int depth;
+    uint32_t slot = 0;
+    std::vector<PrimRecord> records;
+    int depth = 0;
+    uint32_t splitBudget = 0; // extra references its spatial splits may still make
 };
 
-// Builds subtrees of one node array. Children of a split are appended as a pair.
+// What the build needs besides the references.
+struct BuildContext {
+    const Scene* scene = nullptr;
+    float slack = 0.0f;          // splitBox's (bvh_clip.h)
+    float minOverlapArea = 0.0f; // spatial splits only where object splits overlap more
+    float minNodeOverlap = 0.0f; // ... and more than this fraction of the node's own surface
+};
+
+// A built subtree: nodes[0] is its root; leaf node i holds records [index, index + count).
+struct Subtree {
+    std::vector<BvhNode> nodes;
+    std::vector<PrimRecord> records;
+};
+
+// Builds subtrees. Children of a split are appended as a pair.
 class Builder {
 public:
-    Builder(std::vector<PrimRecord>& records, const BvhBuildOptions& options)
-        : records_(records), maxLeaf_(std::clamp(options.maxLeafSize, 1, kMaxLeafSize)),
-          bins_(std::clamp(options.binCount, 2, kMaxBins)) {}
+    Builder(const BvhBuildOptions& options, const BuildContext& context)
+        : maxLeaf_(std::clamp(options.maxLeafSize, 1, kMaxLeafSize)),
+          bins_(std::clamp(options.binCount, 2, kMaxBins)), context_(context) {}
 
-    // Builds the subtree of `task` into nodes; stops descending (and records the task in
-    // `deferred` instead) at nodes with no more than `deferBelow` records, when that is > 0.
-    void build(std::vector<BvhNode>& nodes, BuildTask root, std::size_t deferBelow,
+    // Builds the subtree of `root` into out (root at out.nodes[root.slot]); stops descending
+    // (and records the task in `deferred` instead) at nodes with no more than `deferBelow`
+    // references, when that is > 0.
+    void build(Subtree& out, BuildTask root, std::size_t deferBelow,
                std::vector<BuildTask>* deferred) const {
-        std::vector<BuildTask> stack{root};
+        std::vector<BuildTask> stack;
+        stack.push_back(std::move(root));
+        std::vector<PrimRecord> left, right;
         while (!stack.empty()) {
-            const BuildTask task = stack.back();
+            BuildTask task = std::move(stack.back());
             stack.pop_back();
-            const std::size_t count = task.end - task.begin;
+            const std::size_t count = task.records.size();
             if (deferred && count <= deferBelow && count > static_cast<std::size_t>(maxLeaf_)) {
-                deferred->push_back(task);
+                deferred->push_back(std::move(task));
                 continue;
             }
             Aabb bounds, centroids;
-            boundsOf(records_.data() + task.begin, records_.data() + task.end, bounds, centroids);
-            BvhNode& node = nodes[task.slot];
+            boundsOf(task.records.data(), task.records.data() + count, bounds, centroids);
+            BvhNode& node = out.nodes[task.slot];
             node.lower = bounds.lower;
             node.upper = bounds.upper;
-            const uint32_t mid = chooseSplit(task, bounds, centroids);
-            if (mid == task.begin) { // leaf
-                node.index = task.begin;
+            if (!chooseSplit(task, bounds, centroids, left, right)) { // leaf
+                node.index = static_cast<uint32_t>(out.records.size());
                 node.count = static_cast<uint32_t>(count);
+                out.records.insert(out.records.end(), task.records.begin(), task.records.end());
                 continue;
             }
-            const auto first = static_cast<uint32_t>(nodes.size());
-            nodes.resize(nodes.size() + 2);
-            nodes[task.slot].index = first; // `node` may dangle after the resize
-            nodes[task.slot].count = 0;
+            const auto first = static_cast<uint32_t>(out.nodes.size());
+            out.nodes.resize(out.nodes.size() + 2);
+            out.nodes[task.slot].index = first; // `node` may dangle after the resize
+            out.nodes[task.slot].count = 0;
+            // The budget left after this split goes to the children by their sizes.
+            const std::size_t made = left.size() + right.size() - count;
+            const uint64_t budget = task.splitBudget - std::min<uint64_t>(task.splitBudget, made);
+            const auto leftBudget =
+                static_cast<uint32_t>(budget * left.size() / (left.size() + right.size()));
             // Right first on the stack, so the left child's subtree follows it in memory.
-            stack.push_back({first + 1, mid, task.end, task.depth + 1});
-            stack.push_back({first, task.begin, mid, task.depth + 1});
+            stack.push_back({first + 1, std::move(right), task.depth + 1,
+                             static_cast<uint32_t>(budget) - leftBudget});
+            stack.push_back({first, std::move(left), task.depth + 1, leftBudget});
+            left = {};
+            right = {};
         }
     }
 
 private:
-    // Partitions the task's records and returns the first record of the right child, or
-    // task.begin when the node should be a leaf.
-    uint32_t chooseSplit(const BuildTask& task, const Aabb& bounds, const Aabb& centroids) const {
-        const uint32_t count = task.end - task.begin;
+    // The best object split (binned SAH over centroids) of a task.
+    struct ObjectSplit {
+        int axis = -1;
+        int bin = 0;
+        float cost = kInfinity;
+        float overlapArea = 0.0f; // surface of the intersection of the children's boxes
+        glm::vec3 scale{0.0f};
+    };
+
+    // Splits the task's references into left and right, or returns false for a leaf.
+    bool chooseSplit(BuildTask& task, const Aabb& bounds, const Aabb& centroids,
+                     std::vector<PrimRecord>& left, std::vector<PrimRecord>& right) const {
+        std::vector<PrimRecord>& records = task.records;
+        const auto count = static_cast<uint32_t>(records.size());
         const glm::vec3 extent = centroids.upper - centroids.lower;
         const bool mustSplit = count > static_cast<uint32_t>(maxLeaf_);
         if (count <= 1) {
-            return task.begin;
+            return false;
         }
         const bool flat = !(extent.x > 0.0f) && !(extent.y > 0.0f) && !(extent.z > 0.0f);
         if (flat || task.depth >= kSahDepthLimit) {
-            return mustSplit ? medianSplit(task, extent) : task.begin;
+            return mustSplit && medianSplit(records, extent, left, right);
         }
+        const ObjectSplit object = findObjectSplit(records, centroids);
+        float bestCost = object.cost;
+        SpatialSplit spatial;
+        if (task.splitBudget > 0 && context_.scene &&
+            object.overlapArea > context_.minOverlapArea &&
+            object.overlapArea > context_.minNodeOverlap * bounds.area()) {
+            spatial = findSpatialSplit(*context_.scene, records, bounds, context_.slack);
+            if (spatial.cost < bestCost && spatial.references - count <= task.splitBudget) {
+                bestCost = spatial.cost;
+            } else {
+                spatial.axis = -1;
+            }
+        }
+        if (object.axis < 0 && spatial.axis < 0) {
+            return mustSplit && medianSplit(records, extent, left, right);
+        }
+        const float area = bounds.area();
+        const float splitCost = kTraversalCost * area + bestCost;
+        const float leafCost = static_cast<float>(count) * area;
+        if (!mustSplit && leafCost <= splitCost) {
+            return false;
+        }
+        // The bins estimate the references a spatial split makes; rounding at the plane may
+        // make a few more, so the budget is checked again on the real split.
+        if (spatial.axis >= 0 &&
+            applySpatialSplit(*context_.scene, records, spatial, context_.slack, left, right) &&
+            left.size() + right.size() - count <= task.splitBudget) {
+            return true;
+        }
+        if (object.axis < 0) {
+            return mustSplit && medianSplit(records, extent, left, right);
+        }
+        const int a = object.axis;
+        const float lower = centroids.lower[a], s = object.scale[a];
+        const auto middle =
+            std::partition(records.begin(), records.end(), [&](const PrimRecord& r) {
+                return binOf(r.centroid()[a], lower, s, bins_) < object.bin;
+            });
+        left.assign(records.begin(), middle);
+        right.assign(middle, records.end());
+        return true;
+    }
 
+    ObjectSplit findObjectSplit(const std::vector<PrimRecord>& records,
+                                const Aabb& centroids) const {
+        const auto count = static_cast<uint32_t>(records.size());
+        const glm::vec3 extent = centroids.upper - centroids.lower;
+        ObjectSplit best;
         BinSet bins;
-        glm::vec3 scale;
         for (int a = 0; a < 3; ++a) {
             // Slightly below bins/extent so the largest centroid lands in the last bin.
-            scale[a] = extent[a] > 0.0f ? static_cast<float>(bins_) * 0.99999f / extent[a] : 0.0f;
+            best.scale[a] =
+                extent[a] > 0.0f ? static_cast<float>(bins_) * 0.99999f / extent[a] : 0.0f;
         }
-        binRecords(records_.data() + task.begin, records_.data() + task.end, centroids.lower, scale,
-                   bins_, bins);
-
+        binRecords(records.data(), records.data() + count, centroids.lower, best.scale, bins_,
+                   bins);
         // Sweep each axis: cost of splitting before bin s = A(left) N(left) + A(right) N(right).
-        float bestCost = kInfinity;
-        int bestAxis = -1, bestSplit = 0;
         for (int a = 0; a < 3; ++a) {
             if (!(extent[a] > 0.0f)) {
                 continue;
             }
             std::array<float, kMaxBins> rightCost{};
+            std::array<Aabb, kMaxBins> rightBox{};
             Aabb box;
             uint32_t n = 0;
             for (int s = bins_ - 1; s > 0; --s) {
                 box.extend(bins.box[a][s].toAabb());
                 n += bins.count[a][s];
                 rightCost[s] = box.area() * static_cast<float>(n);
+                rightBox[s] = box;
             }
             box = Aabb{};
             n = 0;
@@ -123,67 +208,80 @@ private:
                 box.extend(bins.box[a][s - 1].toAabb());
                 n += bins.count[a][s - 1];
                 const float cost = box.area() * static_cast<float>(n) + rightCost[s];
-                if (n > 0 && n < count && cost < bestCost) {
-                    bestCost = cost;
-                    bestAxis = a;
-                    bestSplit = s;
+                if (n > 0 && n < count && cost < best.cost) {
+                    best.cost = cost;
+                    best.axis = a;
+                    best.bin = s;
+                    const Aabb overlap{glm::max(box.lower, rightBox[s].lower),
+                                       glm::min(box.upper, rightBox[s].upper)};
+                    best.overlapArea = overlap.area();
                 }
             }
         }
-        if (bestAxis < 0) {
-            return mustSplit ? medianSplit(task, extent) : task.begin;
-        }
-        const float area = bounds.area();
-        const float splitCost = kTraversalCost * area + bestCost;
-        const float leafCost = static_cast<float>(count) * area;
-        if (!mustSplit && leafCost <= splitCost) {
-            return task.begin;
-        }
-        const float lower = centroids.lower[bestAxis], s = scale[bestAxis];
-        const auto middle = std::partition(
-            records_.begin() + task.begin, records_.begin() + task.end, [&](const PrimRecord& r) {
-                return binOf(r.centroid()[bestAxis], lower, s, bins_) < bestSplit;
-            });
-        return static_cast<uint32_t>(middle - records_.begin());
+        return best;
     }
 
     // Splits at the median record along the axis of the largest centroid extent (or in the
     // middle of the range when all centroids coincide). Always gives two non-empty halves.
-    uint32_t medianSplit(const BuildTask& task, const glm::vec3& extent) const {
-        const uint32_t mid = task.begin + (task.end - task.begin) / 2;
+    bool medianSplit(std::vector<PrimRecord>& records, const glm::vec3& extent,
+                     std::vector<PrimRecord>& left, std::vector<PrimRecord>& right) const {
+        const std::size_t mid = records.size() / 2;
         const int axis =
             extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
         if (extent[axis] > 0.0f) {
-            std::nth_element(records_.begin() + task.begin, records_.begin() + mid,
-                             records_.begin() + task.end,
-                             [axis](const PrimRecord& a, const PrimRecord& b) {
+            std::nth_element(records.begin(), records.begin() + static_cast<std::ptrdiff_t>(mid),
+                             records.end(), [axis](const PrimRecord& a, const PrimRecord& b) {
                                  const float ca = a.centroid()[axis], cb = b.centroid()[axis];
                                  return ca < cb || (ca == cb && a.sceneIndex < b.sceneIndex);
                              });
         }
-        return mid;
+        left.assign(records.begin(), records.begin() + static_cast<std::ptrdiff_t>(mid));
+        right.assign(records.begin() + static_cast<std::ptrdiff_t>(mid), records.end());
+        return true;
     }
 
-    std::vector<PrimRecord>& records_;
     int maxLeaf_;
     int bins_;
+    BuildContext context_;
 };
 
-// Appends `sub` (a subtree whose root is sub[0]) to nodes: the root goes to nodes[slot], the rest
-// at the end, with child indices moved accordingly.
-void appendSubtree(std::vector<BvhNode>& nodes, uint32_t slot, const std::vector<BvhNode>& sub) {
-    const auto offset = static_cast<uint32_t>(nodes.size()) - 1; // local 1 -> nodes.size()
-    for (std::size_t i = 0; i < sub.size(); ++i) {
-        BvhNode node = sub[i];
-        if (!node.isLeaf()) {
-            node.index += offset;
-        }
+// Appends `sub` (a subtree whose root is sub.nodes[0]) to `out`: the root goes to
+// out.nodes[slot], the rest at the end, with child and leaf indices moved accordingly.
+void appendSubtree(Subtree& out, uint32_t slot, const Subtree& sub) {
+    const auto offset = static_cast<uint32_t>(out.nodes.size()) - 1; // local 1 -> nodes.size()
+    const auto recordOffset = static_cast<uint32_t>(out.records.size());
+    for (std::size_t i = 0; i < sub.nodes.size(); ++i) {
+        BvhNode node = sub.nodes[i];
+        node.index += node.isLeaf() ? recordOffset : offset;
         if (i == 0) {
-            nodes[slot] = node;
+            out.nodes[slot] = node;
         } else {
-            nodes.push_back(node);
+            out.nodes.push_back(node);
         }
     }
+    out.records.insert(out.records.end(), sub.records.begin(), sub.records.end());
+}
+
+// Reorders the records so that every subtree's leaves are one contiguous range, left subtree
+// first (the order the 8-wide collapse relies on), and points the leaves at it.
+void orderLeaves(Subtree& tree) {
+    std::vector<PrimRecord> ordered;
+    ordered.reserve(tree.records.size());
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+        BvhNode& node = tree.nodes[stack.back()];
+        stack.pop_back();
+        if (node.isLeaf()) {
+            const auto first = static_cast<uint32_t>(ordered.size());
+            ordered.insert(ordered.end(), tree.records.begin() + node.index,
+                           tree.records.begin() + node.index + node.count);
+            node.index = first;
+        } else {
+            stack.push_back(node.index + 1);
+            stack.push_back(node.index);
+        }
+    }
+    tree.records.swap(ordered);
 }
 
 // Widens every node box by `pad` (world units) so that box tests, done in rounded float
@@ -220,26 +318,40 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
 
     // Split boxes are widened by 2^-21 of the largest coordinate (several ulps of any vertex
     // coordinate), and node boxes by 2^-19 below.
-    presplitRecords(scene, options.presplitBudget, std::ldexp(std::max(magnitude, 1e-30f), -21),
-                    records);
-    const Builder builder(records, options);
-    const auto total = static_cast<uint32_t>(records.size());
-    bvh.nodes.reserve(2 * records.size());
-    bvh.nodes.resize(1);
+    const float slack = std::ldexp(std::max(magnitude, 1e-30f), -21);
+    presplitRecords(scene, options.presplitBudget, slack, records);
+    BuildContext context;
+    if (options.spatialSplitBudget > 0.0f) {
+        Aabb all, centres;
+        boundsOf(records.data(), records.data() + records.size(), all, centres);
+        context.scene = &scene;
+        context.slack = slack;
+        context.minOverlapArea = options.spatialSplitOverlap * all.area();
+        context.minNodeOverlap = options.spatialSplitNodeOverlap;
+    }
+    const Builder builder(options, context);
+    const std::size_t total = records.size();
+    Subtree tree;
+    tree.nodes.reserve(2 * total);
+    tree.nodes.resize(1);
     std::vector<BuildTask> deferred;
-    const std::size_t deferBelow = std::max(kMinTaskSize, records.size() / 64);
-    builder.build(bvh.nodes, BuildTask{0, 0, total, 0}, deferBelow, &deferred);
+    const std::size_t deferBelow = std::max(kMinTaskSize, total / 64);
+    BuildTask root{0, std::move(records), 0, 0};
+    root.splitBudget = static_cast<uint32_t>(
+        std::min(1e9, static_cast<double>(std::max(0.0f, options.spatialSplitBudget)) *
+                          static_cast<double>(total)));
+    builder.build(tree, std::move(root), deferBelow, &deferred);
 
-    // The small subtrees, each into its own array, handed out to threads by an atomic counter.
-    std::vector<std::vector<BvhNode>> subtrees(deferred.size());
+    // The small subtrees, each into its own arrays, handed out to threads by an atomic counter.
+    std::vector<Subtree> subtrees(deferred.size());
     std::atomic<std::size_t> next{0};
     auto work = [&] {
         for (std::size_t i; (i = next.fetch_add(1)) < deferred.size();) {
-            BuildTask local = deferred[i];
+            BuildTask local = std::move(deferred[i]);
             local.slot = 0;
-            subtrees[i].reserve(2 * (local.end - local.begin) / 2 + 1);
-            subtrees[i].resize(1);
-            builder.build(subtrees[i], local, 0, nullptr);
+            subtrees[i].nodes.reserve(local.records.size() + 1);
+            subtrees[i].nodes.resize(1);
+            builder.build(subtrees[i], std::move(local), 0, nullptr);
         }
     };
     const int threads = std::min<int>(resolveThreadCount(options.threads),
@@ -252,8 +364,11 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         work();
     }
     for (std::size_t i = 0; i < deferred.size(); ++i) {
-        appendSubtree(bvh.nodes, deferred[i].slot, subtrees[i]);
+        appendSubtree(tree, deferred[i].slot, subtrees[i]);
     }
+    orderLeaves(tree);
+    records.swap(tree.records);
+    bvh.nodes.swap(tree.nodes);
     bvh.nodes.shrink_to_fit();
 
     // Box tests round; the watertight test's edge decisions round too. 2^-19 of the scene's

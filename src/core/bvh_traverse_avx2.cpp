@@ -15,13 +15,12 @@
 
 #include "bvh_box_ray.h"
 #include "bvh_collapse.h"
+#include "watertight_avx2.h"
 
 #include <cmath>
 #include <glm/common.hpp>
 #include <immintrin.h>
 #include <utility>
-
-#define RAYLAB_AVX2 __attribute__((target("avx2")))
 
 namespace raylab {
 
@@ -106,15 +105,8 @@ RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const WideRay& r, fl
         _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ));
 }
 
-// The watertight test of 8 triangles. `hits`: lanes hit with tMin < t < tMax; `exact`: lanes
-// with an edge function of exactly zero, which the caller must test with intersectTriangle.
-struct BlockHits {
-    int hits;
-    int exact;
-    __m256 t, e1, e2, det;
-};
-
-RAYLAB_AVX2 inline BlockHits intersectBlock(const BvhTriangleBlock& block, const WideRay& r) {
+// The watertight test of 8 triangles against the ray (watertight_avx2.h).
+RAYLAB_AVX2 inline LaneHits intersectBlock(const BvhTriangleBlock& block, const WideRay& r) {
     const float* v = &block.vertex[0][0][0];
     __m256 x[3], y[3], z[3]; // sheared a, b, c; z is a[kz] etc. before scaling
     for (int k = 0; k < 3; ++k) {
@@ -125,39 +117,7 @@ RAYLAB_AVX2 inline BlockHits intersectBlock(const BvhTriangleBlock& block, const
         x[k] = _mm256_sub_ps(dx, _mm256_mul_ps(r.shearX, z[k]));
         y[k] = _mm256_sub_ps(dy, _mm256_mul_ps(r.shearY, z[k]));
     }
-    // e0 = cx*by - cy*bx; e1 = ax*cy - ay*cx; e2 = bx*ay - by*ax
-    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[1]), _mm256_mul_ps(y[2], x[1]));
-    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[2]), _mm256_mul_ps(y[0], x[2]));
-    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[0]), _mm256_mul_ps(y[1], x[0]));
-
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 anyZero = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_EQ_OQ), _mm256_cmp_ps(e1, zero, _CMP_EQ_OQ)),
-        _mm256_cmp_ps(e2, zero, _CMP_EQ_OQ));
-    // With no edge function zero, the scalar test's "some < 0 and some > 0" is "the signs
-    // differ". (A NaN lane may pass here; its det is NaN and fails below, as in the scalar test.)
-    const __m256 signsDiffer = _mm256_or_ps(_mm256_xor_ps(e0, e1), _mm256_xor_ps(e0, e2));
-    const int exact = _mm256_movemask_ps(anyZero);
-    const int inside = ~(_mm256_movemask_ps(signsDiffer) | exact) & 0xff;
-    if (inside == 0) { // most blocks: the ray passes all 8 triangles
-        return {0, exact, zero, zero, zero, zero};
-    }
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
-    const __m256 absDet = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    // det != 0 and finite: 0 < |det| < inf (false for NaN).
-    const __m256 detOk =
-        _mm256_and_ps(_mm256_cmp_ps(absDet, zero, _CMP_GT_OQ),
-                      _mm256_cmp_ps(absDet, _mm256_set1_ps(kInfinity), _CMP_LT_OQ));
-
-    const __m256 tScaled =
-        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e0, _mm256_mul_ps(r.shearZ, z[0])),
-                                    _mm256_mul_ps(e1, _mm256_mul_ps(r.shearZ, z[1]))),
-                      _mm256_mul_ps(e2, _mm256_mul_ps(r.shearZ, z[2])));
-    const __m256 t = _mm256_div_ps(tScaled, det);
-    const __m256 inRange =
-        _mm256_and_ps(_mm256_cmp_ps(t, r.tMin, _CMP_GT_OQ), _mm256_cmp_ps(t, r.tMax, _CMP_LT_OQ));
-    const int hits = inside & _mm256_movemask_ps(_mm256_and_ps(detOk, inRange));
-    return {hits, exact, t, e1, e2, det};
+    return watertightLanes(x, y, z, r.shearZ, r.tMin, r.tMax);
 }
 
 // A lane's triangle through the scalar test (for lanes with an exactly zero edge function).
@@ -232,10 +192,10 @@ RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
         } else {
             const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
             for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
-                const BlockHits h = intersectBlock(*block, r);
-                const int closer =
-                    h.hits &
-                    _mm256_movemask_ps(_mm256_cmp_ps(h.t, _mm256_set1_ps(limit), _CMP_LE_OQ));
+                const LaneHits h = intersectBlock(*block, r);
+                const unsigned closer =
+                    h.hits & static_cast<unsigned>(_mm256_movemask_ps(
+                                 _mm256_cmp_ps(h.t, _mm256_set1_ps(limit), _CMP_LE_OQ)));
                 if (closer != 0) {
                     alignas(32) float t[kWideLanes], e1[kWideLanes], e2[kWideLanes],
                         det[kWideLanes];
@@ -243,7 +203,7 @@ RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
                     _mm256_store_ps(e1, h.e1);
                     _mm256_store_ps(e2, h.e2);
                     _mm256_store_ps(det, h.det);
-                    for (unsigned m = static_cast<unsigned>(closer); m != 0; m &= m - 1) {
+                    for (unsigned m = closer; m != 0; m &= m - 1) {
                         const int lane = __builtin_ctz(m);
                         const uint32_t index = block->sceneIndex[lane];
                         if (t[lane] < best.t || (t[lane] == best.t && index < best.triangle)) {
@@ -254,7 +214,7 @@ RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
                         }
                     }
                 }
-                for (unsigned m = static_cast<unsigned>(h.exact); m != 0; m &= m - 1) {
+                for (unsigned m = h.exact; m != 0; m &= m - 1) {
                     const int lane = __builtin_ctz(m);
                     const uint32_t index = block->sceneIndex[lane];
                     float t, u, v;
@@ -309,11 +269,11 @@ RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
         } else {
             const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
             for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
-                const BlockHits h = intersectBlock(*block, r);
+                const LaneHits h = intersectBlock(*block, r);
                 if (h.hits != 0) {
                     return true;
                 }
-                for (unsigned m = static_cast<unsigned>(h.exact); m != 0; m &= m - 1) {
+                for (unsigned m = h.exact; m != 0; m &= m - 1) {
                     float t, u, v;
                     if (intersectLane(*block, __builtin_ctz(m), original, t, u, v)) {
                         return true;

@@ -9,28 +9,56 @@ namespace {
 constexpr float kFourPi = 12.566370614359172f;
 }
 
-glm::vec3 directLight(const Bvh& bvh, const RenderSettings& settings, const glm::vec3& point,
-                      const glm::vec3& facingNormal, RayCounts& counts) {
+SurfacePoint surfaceAt(const Scene& scene, const Ray& ray, const Hit& hit) {
+    const Triangle& triangle = scene.triangles[hit.triangle];
+    SurfacePoint s;
+    s.point = ray.origin + hit.t * ray.direction;
+    s.facingNormal = geometricNormal(triangle);
+    if (glm::dot(s.facingNormal, ray.direction) > 0.0f) {
+        s.facingNormal = -s.facingNormal;
+    }
+    s.rho = scene.materials[triangle.material].diffuse;
+    return s;
+}
+
+LightSample lightAt(const RenderSettings& settings, const glm::vec3& point,
+                    const glm::vec3& facingNormal) {
+    LightSample sample;
     const glm::vec3 r = settings.light.position - point;
     const float distanceSquared = glm::dot(r, r);
     if (!(distanceSquared > 0.0f)) {
-        return glm::vec3(0.0f);
+        return sample;
     }
     const float distance = std::sqrt(distanceSquared);
     const glm::vec3 toLight = r / distance;
     const float cosine = glm::dot(toLight, facingNormal);
     if (!(cosine > 0.0f)) {
-        return glm::vec3(0.0f);
+        return sample;
     }
+    sample.direct = settings.light.power() * (cosine / (kFourPi * distanceSquared));
     if (settings.shadows) {
-        const Ray shadowRay{point, toLight, settings.shadowEpsilon,
-                            distance - settings.shadowEpsilon};
+        sample.needsShadowRay = true;
+        sample.shadowRay =
+            Ray{point, toLight, settings.shadowEpsilon, distance - settings.shadowEpsilon};
+    }
+    return sample;
+}
+
+glm::vec3 labRadiance(const RenderSettings& settings, const glm::vec3& rho,
+                      const glm::vec3& direct) {
+    return rho * (direct + settings.indirect3());
+}
+
+glm::vec3 directLight(const Bvh& bvh, const RenderSettings& settings, const glm::vec3& point,
+                      const glm::vec3& facingNormal, RayCounts& counts) {
+    const LightSample sample = lightAt(settings, point, facingNormal);
+    if (sample.needsShadowRay) {
         ++counts.shadow;
-        if (anyHit(bvh, shadowRay)) {
+        if (anyHit(bvh, sample.shadowRay)) {
             return glm::vec3(0.0f);
         }
     }
-    return settings.light.power() * (cosine / (kFourPi * distanceSquared));
+    return sample.direct;
 }
 
 glm::vec3 shadeLab(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
@@ -40,14 +68,9 @@ glm::vec3 shadeLab(const Scene& scene, const Bvh& bvh, const RenderSettings& set
     if (!hit.found()) {
         return glm::vec3(0.0f);
     }
-    const Triangle& triangle = scene.triangles[hit.triangle];
-    const glm::vec3 point = ray.origin + hit.t * ray.direction;
-    glm::vec3 normal = geometricNormal(triangle);
-    if (glm::dot(normal, ray.direction) > 0.0f) {
-        normal = -normal;
-    }
-    const glm::vec3 rho = scene.materials[triangle.material].diffuse;
-    return rho * (directLight(bvh, settings, point, normal, counts) + settings.indirect3());
+    const SurfacePoint s = surfaceAt(scene, ray, hit);
+    return labRadiance(settings, s.rho,
+                       directLight(bvh, settings, s.point, s.facingNormal, counts));
 }
 
 } // namespace raylab

@@ -4,6 +4,9 @@
 // r runs from the surface point to the light, nhat is the geometric normal turned to face the
 // incoming ray, rho the triangle's diffuse colour, N the constant indirect term. The point is in
 // shadow when a triangle lies on the segment towards the light with eps < t < |r| - eps.
+//
+// The model is written once, in stages (surfaceAt, lightAt, labRadiance); shadeLab runs them for
+// one ray, shadeLab8 (lab_shading_packet.cpp) for a packet of rays with the same results.
 
 #include "bvh.h"
 #include "render_settings.h"
@@ -19,6 +22,30 @@ struct RayCounts {
     std::uint64_t shadow = 0;
 };
 
+// The surface a camera ray hit: where, its facing normal nhat and its diffuse colour rho.
+struct SurfacePoint {
+    glm::vec3 point{0.0f};
+    glm::vec3 facingNormal{0.0f};
+    glm::vec3 rho{0.0f};
+};
+
+// `hit` must be found() for `ray`.
+SurfacePoint surfaceAt(const Scene& scene, const Ray& ray, const Hit& hit);
+
+// The direct light D at a point before the shadow test, and the shadow ray that decides it.
+struct LightSample {
+    glm::vec3 direct{0.0f};      // D when unshadowed; 0 when facing away or at the light
+    bool needsShadowRay = false; // settings.shadows and direct may be non-zero
+    Ray shadowRay;               // towards the light, eps < t < |r| - eps (when needed)
+};
+
+LightSample lightAt(const RenderSettings& settings, const glm::vec3& point,
+                    const glm::vec3& facingNormal);
+
+// R = rho * (D + N).
+glm::vec3 labRadiance(const RenderSettings& settings, const glm::vec3& rho,
+                      const glm::vec3& direct);
+
 // Direct light D arriving at point with facing normal nhat (0 when shadowed or facing away).
 glm::vec3 directLight(const Bvh& bvh, const RenderSettings& settings, const glm::vec3& point,
                       const glm::vec3& facingNormal, RayCounts& counts);
@@ -26,5 +53,10 @@ glm::vec3 directLight(const Bvh& bvh, const RenderSettings& settings, const glm:
 // Radiance R along a camera ray; black when it hits nothing.
 glm::vec3 shadeLab(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const Ray& ray, RayCounts& counts);
+
+// radiance[i] = shadeLab(scene, bvh, settings, rays[i], counts) for i < count <= 8 (bit for bit,
+// and the same counts), with the camera rays and their shadow rays traced as packets.
+void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,
+               int count, glm::vec3* radiance, RayCounts& counts);
 
 } // namespace raylab

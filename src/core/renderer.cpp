@@ -1,8 +1,11 @@
 #include "renderer.h"
 
+#include "bvh_packet.h"
 #include "camera.h"
 #include "parallel_tiles.h"
 #include "sampling.h"
+
+#include <algorithm>
 
 namespace raylab {
 
@@ -24,14 +27,24 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
     }
     const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
         RayCounts tileCounts;
+        // Runs of up to 8 pixels along a row, traced as one packet (shadeLab8).
+        Ray packet[kPacketSize];
+        glm::vec3 radiance[kPacketSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                const PixelOffset offset = samplePixelOffset(static_cast<uint32_t>(x),
-                                                             static_cast<uint32_t>(y), sampleIndex);
-                const Ray ray = rays.through(static_cast<float>(x) + offset.dx,
+            for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketSize) {
+                const int count = std::min(kPacketSize, tile.x1 - x0);
+                for (int i = 0; i < count; ++i) {
+                    const int x = x0 + i;
+                    const PixelOffset offset = samplePixelOffset(
+                        static_cast<uint32_t>(x), static_cast<uint32_t>(y), sampleIndex);
+                    packet[i] = rays.through(static_cast<float>(x) + offset.dx,
                                              static_cast<float>(y) + offset.dy);
-                sums[static_cast<std::size_t>(y) * width + x] +=
-                    shadeLab(scene, bvh, settings, ray, tileCounts);
+                }
+                shadeLab8(scene, bvh, settings, packet, count, radiance, tileCounts);
+                glm::vec3* row = &sums[static_cast<std::size_t>(y) * width + x0];
+                for (int i = 0; i < count; ++i) {
+                    row[i] += radiance[i];
+                }
             }
         }
         primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);

@@ -56,6 +56,7 @@ TEST(BvhRobustness, NonFiniteAndDegenerateTrianglesAreSkipped) {
     EXPECT_GE(bvh.leafReferences, scene.triangles.size() - 6); // pre-split copies may add some
     BvhBuildOptions noSplit;
     noSplit.presplitBudget = 0.0f;
+    noSplit.spatialSplitBudget = 0.0f;
     EXPECT_EQ(buildBvh(scene, noSplit).leafReferences, scene.triangles.size() - 6);
     expectMatchesBruteForce(scene, bvh, makeRandomRays(2000, 4));
 

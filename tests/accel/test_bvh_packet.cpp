@@ -1,0 +1,197 @@
+// Packets of rays (bvh_packet.h) against single rays and the scalar reference: every lane's
+// answer bit for bit, whatever the other lanes hold.
+
+#include "accel_check.h"
+#include "accel_scenes.h"
+#include "core/bvh_packet.h"
+#include "core/camera.h"
+#include "core/cornell_box.h"
+
+#include <algorithm>
+#include <gtest/gtest.h>
+#include <limits>
+#include <random>
+
+namespace raylab::accel_test {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// Traces `rays` in packets of `packetSize` consecutive rays (the last one partial) and expects
+// each lane to equal closestHit, closestHitScalar, anyHit and anyHitScalar of its ray. Returns
+// how many rays hit.
+int expectPacketsEqualSingle(const Bvh& bvh, const std::vector<Ray>& rays,
+                             int packetSize = kPacketSize) {
+    int hits = 0, failures = 0;
+    for (std::size_t first = 0; first < rays.size() && failures < 5; first += packetSize) {
+        const int count = static_cast<int>(
+            std::min<std::size_t>(static_cast<std::size_t>(packetSize), rays.size() - first));
+        Hit packetHits[kPacketSize];
+        bool occluded[kPacketSize];
+        closestHit8(bvh, &rays[first], count, packetHits);
+        anyHit8(bvh, &rays[first], count, occluded);
+        for (int i = 0; i < count; ++i) {
+            const Ray& ray = rays[first + static_cast<std::size_t>(i)];
+            const Hit single = closestHit(bvh, ray);
+            const bool ok = sameHit(packetHits[i], single) &&
+                            sameHit(packetHits[i], closestHitScalar(bvh, ray)) &&
+                            occluded[i] == anyHit(bvh, ray) &&
+                            occluded[i] == anyHitScalar(bvh, ray);
+            if (!ok) {
+                ++failures;
+                ADD_FAILURE() << "ray " << first + static_cast<std::size_t>(i)
+                              << ": packet t=" << packetHits[i].t
+                              << " tri=" << packetHits[i].triangle << " any=" << occluded[i]
+                              << ", single t=" << single.t << " tri=" << single.triangle
+                              << " any=" << anyHit(bvh, ray);
+            }
+            hits += single.found() ? 1 : 0;
+        }
+    }
+    return hits;
+}
+
+// Camera rays of a width x height image in runs of 8 along rows (as the renderer makes them).
+std::vector<Ray> cameraRays(const Camera& camera, int width, int height) {
+    const PrimaryRays primary(camera, width, height);
+    std::vector<Ray> rays;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            rays.push_back(
+                primary.through(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+        }
+    }
+    return rays;
+}
+
+// Shadow rays from the closest hits of `rays` towards `light` (eps = 1e-3, as the lab's).
+std::vector<Ray> shadowRaysOf(const Bvh& bvh, const std::vector<Ray>& rays,
+                              const glm::vec3& light) {
+    std::vector<Ray> shadows;
+    for (const Ray& ray : rays) {
+        const Hit hit = closestHit(bvh, ray);
+        if (hit.found()) {
+            const glm::vec3 point = ray.origin + hit.t * ray.direction;
+            const glm::vec3 r = light - point;
+            const float distance = std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z);
+            shadows.push_back(Ray{point, r / distance, 1e-3f, distance - 1e-3f});
+        }
+    }
+    return shadows;
+}
+
+TEST(BvhPacket, RandomSoupRandomRays) {
+    const Bvh bvh = buildBvh(makeTriangleSoup(20000, 0.05f, 11));
+    EXPECT_GT(expectPacketsEqualSingle(bvh, makeRandomRays(20000, 12)), 0);
+}
+
+TEST(BvhPacket, CoherentRaysIntoASoup) {
+    // Rays from one point into a narrow cone: one permutation, overlapping paths.
+    const Scene soup = makeTriangleSoup(20000, 0.05f, 13);
+    const Bvh bvh = buildBvh(soup);
+    Camera camera;
+    camera.position = {0.2f, 0.1f, -3.0f};
+    const std::vector<Ray> rays = cameraRays(camera, 96, 64);
+    EXPECT_GT(expectPacketsEqualSingle(bvh, rays), 0);
+    expectPacketsEqualSingle(bvh, shadowRaysOf(bvh, rays, {0.3f, 2.5f, -0.5f}));
+}
+
+TEST(BvhPacket, CornellBoxCameraAndShadowRays) {
+    const Bvh bvh = buildBvh(makeCornellBox());
+    const std::vector<Ray> rays = cameraRays(Camera{}, 120, 120);
+    EXPECT_EQ(expectPacketsEqualSingle(bvh, rays), 120 * 120);
+    const std::vector<Ray> shadows = shadowRaysOf(bvh, rays, {0.0f, 0.5f, -0.7f});
+    EXPECT_GT(shadows.size(), 10000u);
+    expectPacketsEqualSingle(bvh, shadows);
+}
+
+TEST(BvhPacket, CornellBoxAxisAlignedRays) {
+    const Bvh bvh = buildBvh(makeCornellBox());
+    expectPacketsEqualSingle(bvh, makeAxisAlignedRays(20000, 0.999f, 14));
+}
+
+TEST(BvhPacket, ClosedSphereFromInsideThroughVerticesAndEdges) {
+    const Scene sphere = makeClosedSphere(64, 128, 2.0f, 0.05f, 15);
+    const Bvh bvh = buildBvh(sphere);
+    std::vector<Ray> rays;
+    for (const Triangle& t : sphere.triangles) {
+        rays.push_back(Ray{glm::vec3(0.0f), t.v0});
+        rays.push_back(Ray{glm::vec3(0.0f), 0.5f * (t.v0 + t.v1)});
+    }
+    EXPECT_EQ(expectPacketsEqualSingle(bvh, rays), static_cast<int>(rays.size()));
+}
+
+TEST(BvhPacket, MixedPermutationsInOnePacket) {
+    // Each packet holds rays along all six axis directions and diagonals, so lanes disagree
+    // on kz and on the direction's sign.
+    const Bvh bvh = buildBvh(makeTriangleSoup(5000, 0.1f, 16));
+    const glm::vec3 directions[8] = {{1, 0.1f, 0.2f},    {-0.1f, 1, 0.3f},    {0.2f, -0.3f, -1},
+                                     {-1, 0.4f, 0.1f},   {0.3f, -1, 0.2f},    {0.1f, 0.2f, 1},
+                                     {0.5f, 0.5f, 0.5f}, {-0.6f, 0.6f, -0.6f}};
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> u(-0.5f, 0.5f);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 8000; ++i) {
+        rays.push_back(Ray{{u(rng), u(rng), u(rng)}, directions[(i * 3 + i / 8) % 8]});
+    }
+    EXPECT_GT(expectPacketsEqualSingle(bvh, rays), 0);
+}
+
+TEST(BvhPacket, InvalidRaysInSomeLanes) {
+    const Bvh bvh = buildBvh(makeTriangleSoup(5000, 0.1f, 18));
+    std::vector<Ray> rays = makeRandomRays(4000, 19);
+    for (std::size_t i = 0; i < rays.size(); i += 3) {
+        switch (i % 5) {
+        case 0: rays[i].direction = glm::vec3(0.0f); break;
+        case 1: rays[i].origin.y = kNaN; break;
+        case 2: rays[i].direction.z = kInfinity; break;
+        case 3: rays[i].tMax = kNaN; break;
+        default: rays[i].tMin = kNaN; break;
+        }
+    }
+    expectPacketsEqualSingle(bvh, rays);
+}
+
+TEST(BvhPacket, PartiallyFilledPackets) {
+    const Bvh bvh = buildBvh(makeCornellBox());
+    const std::vector<Ray> rays = cameraRays(Camera{}, 35, 21);
+    for (int size = 0; size <= kPacketSize; ++size) {
+        if (size > 0) {
+            expectPacketsEqualSingle(bvh, rays, size);
+        }
+    }
+    Hit untouched[kPacketSize];
+    closestHit8(bvh, rays.data(), 0, untouched); // an empty packet does nothing
+    EXPECT_FALSE(untouched[0].found());
+}
+
+TEST(BvhPacket, ShadowRaysWithLimitsJustBelowTheHit) {
+    const Bvh bvh = buildBvh(makeHeightField(64, 20));
+    std::vector<Ray> rays = cameraRays(Camera{}, 64, 32);
+    std::vector<Ray> limited;
+    for (const Ray& ray : rays) {
+        const Hit hit = closestHit(bvh, ray);
+        Ray below = ray;
+        below.tMax = hit.found() ? std::nextafter(hit.t, 0.0f) : 1.0f;
+        limited.push_back(below);
+        Ray at = ray;
+        at.tMax = hit.found() ? hit.t : 2.0f;
+        limited.push_back(at);
+    }
+    expectPacketsEqualSingle(bvh, limited);
+}
+
+TEST(BvhPacket, ScalarOnlyBvhStillAnswers) {
+    BvhBuildOptions scalarOnly;
+    scalarOnly.simd = false;
+    const Bvh bvh = buildBvh(makeCornellBox(), scalarOnly);
+    EXPECT_EQ(expectPacketsEqualSingle(bvh, cameraRays(Camera{}, 40, 40)), 40 * 40);
+}
+
+TEST(BvhPacket, EmptyScene) {
+    const Bvh bvh = buildBvh(Scene{});
+    EXPECT_EQ(expectPacketsEqualSingle(bvh, makeRandomRays(100, 21)), 0);
+}
+
+} // namespace
+} // namespace raylab::accel_test

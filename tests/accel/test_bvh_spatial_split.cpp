@@ -1,0 +1,99 @@
+// Spatial splits in the build (core/bvh_spatial_split.h): triangles cut by split planes sit in
+// several leaves and must still give brute force's answers, bit for bit, on every path (scalar,
+// SIMD, packets), within the reference budget, and the same tree for any thread count.
+
+#include "accel_check.h"
+#include "accel_scenes.h"
+#include "core/bvh_packet.h"
+
+#include <cstring>
+#include <gtest/gtest.h>
+#include <random>
+
+namespace raylab::accel_test {
+namespace {
+
+// A room-like scene: large quads (floor, walls, slabs at random heights) across the whole
+// extent, among small triangles; object splits cannot separate the large ones.
+Scene makeRoom(int smallCount, uint32_t seed) {
+    Scene scene = makeTriangleSoup(smallCount, 0.05f, seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    for (int i = 0; i < 40; ++i) {
+        const float h = unit(rng);
+        const int axis = i % 3;
+        glm::vec3 p[4];
+        for (int k = 0; k < 4; ++k) {
+            const float s = (k == 1 || k == 2) ? 1.0f : -1.0f, t = k >= 2 ? 1.0f : -1.0f;
+            p[k][axis] = h + 0.01f * unit(rng); // slightly tilted
+            p[k][(axis + 1) % 3] = s;
+            p[k][(axis + 2) % 3] = t;
+        }
+        scene.triangles.push_back({p[0], p[1], p[2], 0});
+        scene.triangles.push_back({p[0], p[2], p[3], 0});
+    }
+    return scene;
+}
+
+BvhBuildOptions spatialOnly(float budget) {
+    BvhBuildOptions options;
+    options.presplitBudget = 0.0f;
+    options.spatialSplitBudget = budget;
+    return options;
+}
+
+TEST(BvhSpatialSplit, SplitsLargeTrianglesWithinTheBudget) {
+    const Scene scene = makeRoom(3000, 41);
+    const std::size_t valid = scene.triangles.size();
+    EXPECT_EQ(buildBvh(scene, spatialOnly(0.0f)).leafReferences, valid);
+    const Bvh bvh = buildBvh(scene, spatialOnly(0.3f));
+    EXPECT_GT(bvh.leafReferences, valid);
+    EXPECT_LE(bvh.leafReferences, valid + valid * 3 / 10);
+}
+
+TEST(BvhSpatialSplit, MatchesBruteForceOnEveryPath) {
+    const Scene scene = makeRoom(3000, 42);
+    for (const float budget : {0.3f, 4.0f}) {
+        const Bvh bvh = buildBvh(scene, spatialOnly(budget));
+        EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(6000, 43)), 1000);
+        expectMatchesBruteForce(scene, bvh, makeAxisAlignedRays(4000, 1.1f, 44));
+        const std::vector<Ray> rays = makeRandomRays(4000, 45);
+        for (std::size_t i = 0; i + kPacketSize <= rays.size(); i += kPacketSize) {
+            Hit hits[kPacketSize];
+            bool occluded[kPacketSize];
+            closestHit8(bvh, &rays[i], kPacketSize, hits);
+            anyHit8(bvh, &rays[i], kPacketSize, occluded);
+            for (int k = 0; k < kPacketSize; ++k) {
+                const Ray& ray = rays[i + static_cast<std::size_t>(k)];
+                ASSERT_TRUE(sameHit(hits[k], closestHitBruteForce(scene, ray))) << i + k;
+                ASSERT_EQ(occluded[k], anyHitBruteForce(scene, ray)) << i + k;
+            }
+        }
+    }
+}
+
+TEST(BvhSpatialSplit, WithPresplittingToo) {
+    const Scene scene = makeRoom(2000, 46);
+    BvhBuildOptions both;
+    both.presplitBudget = 1.0f;
+    both.spatialSplitBudget = 1.0f;
+    const Bvh bvh = buildBvh(scene, both);
+    EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(6000, 47)), 1000);
+}
+
+TEST(BvhSpatialSplit, SameTreeForAnyThreadCount) {
+    const Scene scene = makeRoom(30000, 48); // big enough for parallel subtrees
+    BvhBuildOptions one = spatialOnly(0.3f), two = spatialOnly(0.3f);
+    one.threads = 1;
+    two.threads = 2;
+    const Bvh a = buildBvh(scene, one), b = buildBvh(scene, two);
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)), 0);
+    ASSERT_EQ(a.triangleBlocks.size(), b.triangleBlocks.size());
+    EXPECT_EQ(std::memcmp(a.triangleBlocks.data(), b.triangleBlocks.data(),
+                          a.triangleBlocks.size() * sizeof(BvhTriangleBlock)),
+              0);
+}
+
+} // namespace
+} // namespace raylab::accel_test
