@@ -107,20 +107,28 @@ TEST(ViewerRenderWorker, PreviewWhenPassesAreSlow) {
     RenderWorker worker(1e-9); // any pass is "slow": every restart starts with a preview
     RenderSettings settings = smallSettings(1);
     waitFinal(worker, worker.submit({box, settings}));
+    const uint64_t previewsBefore = worker.totals().previews.count;
     settings.camera.position.z = -2.5f;
     const uint64_t serial = worker.submit({box, settings});
-    bool sawPreview = false;
+    // takeLatest keeps only the newest picture, so the final one may replace the preview before
+    // this thread looks: the worker's count says whether a preview ran; a preview caught in
+    // passing must be enlarged to the render resolution.
+    int previewsCaught = 0;
     ShownImage shown;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     while (!(shown.jobSerial == serial && shown.final) &&
            std::chrono::steady_clock::now() < deadline) {
         if (worker.takeLatest(shown) && shown.jobSerial == serial && shown.preview) {
-            sawPreview = true;
-            EXPECT_EQ(shown.image.width, 64); // enlarged to the render resolution
+            ++previewsCaught;
+            EXPECT_EQ(shown.image.width, 64);
             EXPECT_LT(shown.settings.width, 64);
+            EXPECT_FALSE(shown.final);
         }
     }
-    EXPECT_TRUE(sawPreview);
+    EXPECT_EQ(worker.totals().previews.count, previewsBefore + 1);
+    EXPECT_LE(previewsCaught, 1);
+    ASSERT_TRUE(shown.final);
+    EXPECT_FALSE(shown.preview);
     EXPECT_EQ(shown.image.pixels, reference(*box, settings));
 }
 
