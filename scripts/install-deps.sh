@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake pkg-config git
+    build-essential cmake pkg-config git clang-format
     libglm-dev libassimp-dev libpng-dev nlohmann-json3-dev libopenexr-dev
     libgtest-dev libgmock-dev libembree-dev
     libglfw3-dev libimgui-dev python3-glad libgl-dev
