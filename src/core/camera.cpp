@@ -1,5 +1,8 @@
 #include "camera.h"
 
+#include "bvh.h"
+#include "watertight_avx2.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -9,7 +12,39 @@ namespace raylab {
 
 namespace {
 constexpr float kMaxLookAtPitchDegrees = 89.9f;
+
+// through() on 8 lanes: the same IEEE single-precision operations in the same order (core builds
+// with -ffp-contract=off), i.e. v = (right * (px - halfWidth) + up * (halfHeight - py)) +
+// forward * focal per component, then glm::normalize's v * (1 / sqrt((x*x + y*y) + z*z)).
+RAYLAB_AVX2 void through8Avx2(const PrimaryRays& p, const float* px, const float* py, int count,
+                              Ray* rays) {
+    float xs[8] = {};
+    float ys[8] = {};
+    for (int i = 0; i < count; ++i) {
+        xs[i] = px[i];
+        ys[i] = py[i];
+    }
+    const __m256 a = _mm256_sub_ps(_mm256_loadu_ps(xs), _mm256_set1_ps(p.halfWidth));
+    const __m256 b = _mm256_sub_ps(_mm256_set1_ps(p.halfHeight), _mm256_loadu_ps(ys));
+    __m256 v[3];
+    for (int k = 0; k < 3; ++k) {
+        v[k] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(p.right[k]), a),
+                                           _mm256_mul_ps(_mm256_set1_ps(p.up[k]), b)),
+                             _mm256_set1_ps(p.forward[k] * p.focal));
+    }
+    const __m256 dot =
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(v[0], v[0]), _mm256_mul_ps(v[1], v[1])),
+                      _mm256_mul_ps(v[2], v[2]));
+    const __m256 inverse = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(dot));
+    alignas(32) float d[3][8];
+    for (int k = 0; k < 3; ++k) {
+        _mm256_store_ps(d[k], _mm256_mul_ps(v[k], inverse));
+    }
+    for (int i = 0; i < count; ++i) {
+        rays[i] = Ray{p.origin, glm::vec3(d[0][i], d[1][i], d[2][i])};
+    }
 }
+} // namespace
 
 glm::vec3 forwardOf(const Camera& camera) {
     const float yaw = glm::radians(camera.yawDegrees);
@@ -65,6 +100,17 @@ Ray PrimaryRays::through(float px, float py) const {
     ray.direction =
         glm::normalize(right * (px - halfWidth) + up * (halfHeight - py) + forward * focal);
     return ray;
+}
+
+void PrimaryRays::through8(const float* px, const float* py, int count, Ray* rays) const {
+    static const bool simd = bvhSimdSupported();
+    if (simd) {
+        through8Avx2(*this, px, py, count, rays);
+        return;
+    }
+    for (int i = 0; i < count; ++i) {
+        rays[i] = through(px[i], py[i]);
+    }
 }
 
 } // namespace raylab

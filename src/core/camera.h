@@ -44,6 +44,10 @@ struct PrimaryRays {
     // The ray through image point (px, py) in pixel units, y counting down from the top; the
     // pixel (x, y)'s centre is (x + 0.5, y + 0.5). The direction is unit length.
     Ray through(float px, float py) const;
+
+    // rays[i] = through(px[i], py[i]) bit for bit, for i < count <= 8 (8 lanes at once where the
+    // CPU has AVX2; px and py are read for i < count only).
+    void through8(const float* px, const float* py, int count, Ray* rays) const;
 };
 
 } // namespace raylab

@@ -16,6 +16,7 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
     const PrimaryRays rays(settings.camera, width, settings.height);
     std::atomic<uint64_t> primary{0};
     std::atomic<uint64_t> shadow{0};
+    const uint32_t sampleSeed = hash32(sampleIndex);
 
     TileLoopOptions loop;
     loop.threads = settings.threads;
@@ -30,16 +31,24 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
         // Runs of up to 8 pixels along a row, traced as one packet (shadeLab8).
         Ray packet[kPacketSize];
         glm::vec3 radiance[kPacketSize];
+        float px[kPacketSize];
+        float py[kPacketSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
+            // samplePixelOffset's hash with its row and sample parts hoisted out of the pixels.
+            const uint32_t rowSeed = hash32(static_cast<uint32_t>(y) ^ sampleSeed);
             for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketSize) {
                 const int count = std::min(kPacketSize, tile.x1 - x0);
                 for (int i = 0; i < count; ++i) {
                     const int x = x0 + i;
-                    const PixelOffset offset = samplePixelOffset(
-                        static_cast<uint32_t>(x), static_cast<uint32_t>(y), sampleIndex);
-                    packet[i] = rays.through(static_cast<float>(x) + offset.dx,
-                                             static_cast<float>(y) + offset.dy);
+                    PixelOffset offset{0.5f, 0.5f};
+                    if (sampleIndex != 0) {
+                        const uint32_t seed = hash32(static_cast<uint32_t>(x) ^ rowSeed);
+                        offset = {unitFloat(seed), unitFloat(hash32(seed ^ 0x9e3779b9U))};
+                    }
+                    px[i] = static_cast<float>(x) + offset.dx;
+                    py[i] = static_cast<float>(y) + offset.dy;
                 }
+                rays.through8(px, py, count, packet);
                 shadeLab8(scene, bvh, settings, packet, count, radiance, tileCounts);
                 glm::vec3* row = &sums[static_cast<std::size_t>(y) * width + x0];
                 for (int i = 0; i < count; ++i) {
