@@ -6,7 +6,7 @@
 // (those of ImGui's backend, installed with install_callbacks = true, which chain on to the
 // viewer's InputCollector) and forwards every event to them, in arrival order, holding back the
 // ones the gate keeps until a later frame. One relay per process (like GlWindow); construct it
-// after ImGuiLayer and destroy it before.
+// after PanelContext and destroy it before.
 
 #include "key_event_gate.h"
 

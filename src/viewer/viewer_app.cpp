@@ -14,10 +14,10 @@
 #include "gl_window.h"
 #include "history.h"
 #include "image_quad.h"
-#include "imgui_layer.h"
 #include "input.h"
 #include "key_relay.h"
 #include "panel.h"
+#include "panel_context.h"
 #include "render_worker.h"
 #include "run_stats.h"
 #include "scene_loader.h"
@@ -91,7 +91,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     }
     InputCollector input;
     input.attach(window.handle()); // before ImGui, whose callbacks chain to these
-    ImGuiLayer gui(window.handle());
+    PanelContext gui(window.handle());
     ImageQuad quad;
     if (!gui.ok() || !quad.create(error)) {
         std::fprintf(stderr, "raylab: %s\n", gui.ok() ? error.c_str() : "cannot start Dear ImGui");

@@ -1,4 +1,4 @@
-#include "imgui_layer.h"
+#include "panel_context.h"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -6,7 +6,7 @@
 
 namespace raylab::viewer {
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+PanelContext::PanelContext(GLFWwindow* window) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -18,7 +18,7 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
     ok_ = platformReady_ && rendererReady_;
 }
 
-ImGuiLayer::~ImGuiLayer() {
+PanelContext::~PanelContext() {
     if (rendererReady_) {
         ImGui_ImplOpenGL3_Shutdown();
     }
@@ -28,13 +28,13 @@ ImGuiLayer::~ImGuiLayer() {
     ImGui::DestroyContext();
 }
 
-void ImGuiLayer::beginFrame() {
+void PanelContext::beginFrame() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
 }
 
-void ImGuiLayer::endFrame() {
+void PanelContext::endFrame() {
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

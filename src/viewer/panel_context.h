@@ -1,19 +1,20 @@
 #pragma once
-// Dear ImGui on the window: context, GLFW platform backend and OpenGL3 renderer backend, set up in
-// the order of Dear ImGui's example_glfw_opengl3 and torn down in reverse.
+// The panel's Dear ImGui context on the window: the context, GLFW platform backend and OpenGL3
+// renderer backend, set up in the order of Dear ImGui's example_glfw_opengl3 and torn down in
+// reverse.
 
 struct GLFWwindow;
 
 namespace raylab::viewer {
 
-class ImGuiLayer {
+class PanelContext {
 public:
     // Installs ImGui's GLFW callbacks, which chain to the callbacks the window already has: set
     // the viewer's own callbacks before this. No imgui.ini is read or written.
-    explicit ImGuiLayer(GLFWwindow* window);
-    ImGuiLayer(const ImGuiLayer&) = delete;
-    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
-    ~ImGuiLayer();
+    explicit PanelContext(GLFWwindow* window);
+    PanelContext(const PanelContext&) = delete;
+    PanelContext& operator=(const PanelContext&) = delete;
+    ~PanelContext();
 
     bool ok() const { return ok_; }
     void beginFrame();
