@@ -43,6 +43,20 @@ bool isDirectory(const std::string& path) {
     return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
 }
 
+// Opens a new temporary file beside `path`, which must not be a folder; returns its descriptor, or
+// -1 with a one-line error naming `path`.
+int openTempBeside(const std::string& path, std::string& tempPath, std::string& error) {
+    if (isDirectory(path)) {
+        error = systemError("write", path, EISDIR);
+        return -1;
+    }
+    const int fd = makeTemp(path, tempPath);
+    if (fd < 0) {
+        error = systemError("write", path, errno);
+    }
+    return fd;
+}
+
 bool finish(const std::string& path, const std::string& tempPath, std::string& error) {
     if (std::rename(tempPath.c_str(), path.c_str()) != 0) {
         error = systemError("write", path, errno);
@@ -57,14 +71,9 @@ bool finish(const std::string& path, const std::string& tempPath, std::string& e
 bool writeFileAtomically(const std::string& path,
                          const std::function<bool(std::FILE* file, std::string& error)>& writeBody,
                          std::string& error) {
-    if (isDirectory(path)) {
-        error = systemError("write", path, EISDIR);
-        return false;
-    }
     std::string tempPath;
-    const int fd = makeTemp(path, tempPath);
+    const int fd = openTempBeside(path, tempPath, error);
     if (fd < 0) {
-        error = systemError("write", path, errno);
         return false;
     }
     std::FILE* file = ::fdopen(fd, "wb");
@@ -98,14 +107,9 @@ bool writeFileAtomicallyByName(
     const std::string& path,
     const std::function<bool(const std::string& tempPath, std::string& error)>& writeTo,
     std::string& error) {
-    if (isDirectory(path)) {
-        error = systemError("write", path, EISDIR);
-        return false;
-    }
     std::string tempPath;
-    const int fd = makeTemp(path, tempPath);
+    const int fd = openTempBeside(path, tempPath, error);
     if (fd < 0) {
-        error = systemError("write", path, errno);
         return false;
     }
     ::close(fd);
@@ -119,14 +123,9 @@ bool writeFileAtomicallyByName(
 }
 
 bool checkWritable(const std::string& path, std::string& error) {
-    if (isDirectory(path)) {
-        error = systemError("write", path, EISDIR);
-        return false;
-    }
     std::string tempPath;
-    const int fd = makeTemp(path, tempPath);
+    const int fd = openTempBeside(path, tempPath, error);
     if (fd < 0) {
-        error = systemError("write", path, errno);
         return false;
     }
     ::close(fd);
