@@ -1,5 +1,8 @@
 #include "display_transform.h"
 
+#include "srgb_quantizer.h"
+
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -7,19 +10,10 @@ namespace raylab {
 
 namespace {
 
-uint8_t quantize(float unit) {
-    // !(unit > 0) also catches NaN.
-    if (!(unit > 0.0f)) {
-        return 0;
-    }
-    if (unit >= 1.0f) {
-        return 255;
-    }
-    return static_cast<uint8_t>(unit * 255.0f + 0.5f);
-}
-
-float srgbEncode(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+// round(clamp(unit, 0, 1) * 255), NaN to 0; branch-free so the loops below vectorise.
+inline uint8_t quantize(float unit) {
+    const float clamped = std::min(unit > 0.0f ? unit : 0.0f, 1.0f);
+    return static_cast<uint8_t>(clamped * 255.0f + 0.5f);
 }
 
 } // namespace
@@ -28,18 +22,29 @@ uint8_t displayChannel(float value, DisplayMode mode, float exposure) {
     if (mode == DisplayMode::Lab) {
         return quantize(value);
     }
-    const float exposed = value * std::exp2(exposure);
-    return quantize(exposed > 0.0f ? srgbEncode(exposed) : 0.0f);
+    return srgbQuantizer()(value * std::exp2(exposure));
 }
 
 void toRgba8(std::span<const glm::vec3> linear, float scale, DisplayMode mode, float exposure,
              std::span<uint8_t> rgba) {
     assert(rgba.size() >= 4 * linear.size());
+    if (mode == DisplayMode::Lab) {
+        for (std::size_t i = 0; i < linear.size(); ++i) {
+            const glm::vec3 c = linear[i] * scale;
+            rgba[4 * i + 0] = quantize(c.x);
+            rgba[4 * i + 1] = quantize(c.y);
+            rgba[4 * i + 2] = quantize(c.z);
+            rgba[4 * i + 3] = 255;
+        }
+        return;
+    }
+    const SrgbQuantizer& srgb = srgbQuantizer();
+    const float gain = std::exp2(exposure);
     for (std::size_t i = 0; i < linear.size(); ++i) {
         const glm::vec3 c = linear[i] * scale;
-        rgba[4 * i + 0] = displayChannel(c.x, mode, exposure);
-        rgba[4 * i + 1] = displayChannel(c.y, mode, exposure);
-        rgba[4 * i + 2] = displayChannel(c.z, mode, exposure);
+        rgba[4 * i + 0] = srgb(c.x * gain);
+        rgba[4 * i + 1] = srgb(c.y * gain);
+        rgba[4 * i + 2] = srgb(c.z * gain);
         rgba[4 * i + 3] = 255;
     }
 }

@@ -1,0 +1,70 @@
+// The table-driven sRGB quantizer against the pow formula it replaces, float by float.
+
+#include "core/display_transform.h"
+#include "core/srgb_quantizer.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <gtest/gtest.h>
+#include <limits>
+
+namespace raylab {
+namespace {
+
+float floatOf(uint32_t bits) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
+TEST(SrgbQuantizer, EqualsTheFormulaOnEverySixteenthFloatBelowOne) {
+    const SrgbQuantizer& srgb = srgbQuantizer();
+    const uint32_t one = 0x3f800000u;
+    uint64_t checked = 0;
+    for (uint32_t bits = 0; bits <= one; bits += 16) {
+        const float x = floatOf(bits);
+        ASSERT_EQ(srgb(x), srgbByteByFormula(x)) << "x = " << x << " (bits " << bits << ")";
+        ++checked;
+    }
+    EXPECT_GT(checked, 60'000'000u);
+}
+
+TEST(SrgbQuantizer, EveryStepIsWhereTheFormulaSteps) {
+    const SrgbQuantizer& srgb = srgbQuantizer();
+    for (int b = 1; b < 256; ++b) {
+        const float first = srgb.firstOf(b);
+        const float before = std::nextafter(first, 0.0f);
+        EXPECT_EQ(srgbByteByFormula(first), b);
+        EXPECT_EQ(srgbByteByFormula(before), b - 1) << "the formula skips or repeats a step";
+        EXPECT_EQ(srgb(first), b);
+        EXPECT_EQ(srgb(before), b - 1);
+    }
+}
+
+TEST(SrgbQuantizer, OutOfRangeValues) {
+    const SrgbQuantizer& srgb = srgbQuantizer();
+    EXPECT_EQ(srgb(-1.0f), 0);
+    EXPECT_EQ(srgb(-0.0f), 0);
+    EXPECT_EQ(srgb(std::numeric_limits<float>::quiet_NaN()), 0);
+    EXPECT_EQ(srgb(std::numeric_limits<float>::denorm_min()), 0);
+    EXPECT_EQ(srgb(1.0f), 255);
+    EXPECT_EQ(srgb(3.0e38f), 255);
+    EXPECT_EQ(srgb(std::numeric_limits<float>::infinity()), 255);
+}
+
+TEST(SrgbQuantizer, ImagesUseItWithExposure) {
+    const std::vector<glm::vec3> pixels{{0.11f, 0.5f, 2.0f}, {0.0f, 0.001f, 0.3f}};
+    std::vector<uint8_t> rgba(8);
+    toRgba8(pixels, 0.5f, DisplayMode::Srgb, 1.0f, rgba); // scale 1/2, then 2 stops up: x2
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const float exposed = pixels[i][c] * 0.5f * 2.0f;
+            EXPECT_EQ(rgba[4 * i + static_cast<std::size_t>(c)], srgbByteByFormula(exposed));
+        }
+        EXPECT_EQ(rgba[4 * i + 3], 255);
+    }
+}
+
+} // namespace
+} // namespace raylab
