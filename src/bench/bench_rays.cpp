@@ -73,4 +73,30 @@ void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& s
     }
 }
 
+namespace {
+void packTiles(const std::vector<Ray>& rays, const std::vector<std::size_t>& rayOffset,
+               std::vector<RayPacket>& packets, std::vector<std::size_t>& packetOffset) {
+    packets.clear();
+    packetOffset.assign(1, 0);
+    for (std::size_t tile = 0; tile + 1 < rayOffset.size(); ++tile) {
+        for (std::size_t i = rayOffset[tile]; i < rayOffset[tile + 1]; i += kPacketSize) {
+            RayPacket packet;
+            const std::size_t n = std::min<std::size_t>(kPacketSize, rayOffset[tile + 1] - i);
+            for (std::size_t k = 0; k < n; ++k) {
+                packet.set(static_cast<int>(k), rays[i + k]);
+            }
+            packets.push_back(packet);
+        }
+        packetOffset.push_back(packets.size());
+    }
+}
+} // namespace
+
+PacketedRays packRays(const BenchRays& rays) {
+    PacketedRays packeted;
+    packTiles(rays.primary, rays.primaryOffset, packeted.primary, packeted.primaryOffset);
+    packTiles(rays.shadow, rays.shadowOffset, packeted.shadow, packeted.shadowOffset);
+    return packeted;
+}
+
 } // namespace raylab::bench

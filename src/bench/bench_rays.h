@@ -4,6 +4,7 @@
 // the light. Rays are stored tile by tile, so threads take whole tiles of contiguous rays.
 
 #include "core/ray.h"
+#include "core/ray_packet.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
 
@@ -22,6 +23,18 @@ struct BenchRays {
     std::size_t tiles() const { return primaryOffset.empty() ? 0 : primaryOffset.size() - 1; }
     std::size_t total() const { return primary.size() + shadow.size(); }
 };
+
+// The same rays in packets of 8 (ray_packet.h): each tile's rays, 8 consecutive ones a packet
+// (the tile's last packet may be partial). Ray k of a tile is lane k % 8 of the tile's packet
+// k / 8.
+struct PacketedRays {
+    std::vector<RayPacket> primary;
+    std::vector<std::size_t> primaryOffset; // tile i's packets: [offset[i], offset[i + 1])
+    std::vector<RayPacket> shadow;
+    std::vector<std::size_t> shadowOffset;
+};
+
+PacketedRays packRays(const BenchRays& rays);
 
 // Tile i covers the same pixels as forEachTile's tile i (parallel_tiles.h) for this size.
 int tileIndex(int x0, int y0, int width, int tileSize);

@@ -221,23 +221,18 @@ int run(int argc, char** argv) {
         }
     };
     // Packets of 8 consecutive rays of a tile: 8 pixels of a row, or 8 shadow rays of
-    // neighbouring hits.
-    std::vector<Hit> packetHits(rays.primary.size());
-    std::vector<uint8_t> packetOccluded(rays.shadow.size(), 0);
+    // neighbouring hits, packed (structure of arrays, ray_packet.h) before any timing.
+    const PacketedRays packeted = packRays(rays);
+    std::vector<HitPacket> packetHits(packeted.primary.size());
+    std::vector<unsigned> packetOccluded(packeted.shadow.size(), 0);
     const TileTracer packetTile = [&](std::size_t tile) {
-        const std::size_t p0 = rays.primaryOffset[tile], p1 = rays.primaryOffset[tile + 1];
-        for (std::size_t i = p0; i < p1; i += kPacketSize) {
-            const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, p1 - i));
-            closestHit8(bvh, &rays.primary[i], n, &packetHits[i]);
+        for (std::size_t i = packeted.primaryOffset[tile]; i < packeted.primaryOffset[tile + 1];
+             ++i) {
+            closestHit8(bvh, packeted.primary[i], packetHits[i]);
         }
-        const std::size_t s1 = rays.shadowOffset[tile + 1];
-        for (std::size_t j = rays.shadowOffset[tile]; j < s1; j += kPacketSize) {
-            const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, s1 - j));
-            bool answers[kPacketSize];
-            anyHit8(bvh, &rays.shadow[j], n, answers);
-            for (int k = 0; k < n; ++k) {
-                packetOccluded[j + static_cast<std::size_t>(k)] = answers[k] ? 1 : 0;
-            }
+        for (std::size_t j = packeted.shadowOffset[tile]; j < packeted.shadowOffset[tile + 1];
+             ++j) {
+            packetOccluded[j] = anyHit8(bvh, packeted.shadow[j]);
         }
     };
     const bool packets = !flags.scalar && !flags.noPackets;
@@ -284,11 +279,22 @@ int run(int argc, char** argv) {
 #endif
 
     if (packets) {
-        for (std::size_t i = 0; i < hits.size(); ++i) {
-            report.packetMismatches += std::memcmp(&hits[i], &packetHits[i], sizeof(Hit)) != 0;
-        }
-        for (std::size_t j = 0; j < occluded.size(); ++j) {
-            report.packetMismatches += occluded[j] != packetOccluded[j] ? 1 : 0;
+        // Ray k of a tile is lane k % 8 of the tile's packet k / 8 (bench_rays.h).
+        for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
+            for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
+                const std::size_t k = i - rays.primaryOffset[tile];
+                const Hit packetHit =
+                    packetHits[packeted.primaryOffset[tile] + k / kPacketSize].hit(
+                        static_cast<int>(k % kPacketSize));
+                report.packetMismatches += std::memcmp(&hits[i], &packetHit, sizeof(Hit)) != 0;
+            }
+            for (std::size_t j = rays.shadowOffset[tile]; j < rays.shadowOffset[tile + 1]; ++j) {
+                const std::size_t k = j - rays.shadowOffset[tile];
+                const unsigned answers =
+                    packetOccluded[packeted.shadowOffset[tile] + k / kPacketSize];
+                const bool packetAnswer = ((answers >> (k % kPacketSize)) & 1u) != 0;
+                report.packetMismatches += (occluded[j] != 0) != packetAnswer ? 1 : 0;
+            }
         }
     }
 

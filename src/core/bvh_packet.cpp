@@ -8,19 +8,52 @@
 
 namespace raylab {
 
+void closestHit8(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
+    unsigned single = rays.lanes;
+    if (!bvh.wideNodes.empty() && rays.lanes != 0) {
+        single = closestHitPacket(bvh, rays, hits);
+    } else {
+        hits.clear();
+    }
+    for (unsigned m = single; m != 0; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        hits.set(i, closestHit(bvh, rays.ray(i)));
+    }
+}
+
+unsigned anyHit8(const Bvh& bvh, const RayPacket& rays) {
+    unsigned occluded = 0;
+    unsigned single = rays.lanes;
+    if (!bvh.wideNodes.empty() && rays.lanes != 0) {
+        single = anyHitPacket(bvh, rays, occluded);
+    }
+    for (unsigned m = single; m != 0; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        if (anyHit(bvh, rays.ray(i))) {
+            occluded |= 1u << i;
+        }
+    }
+    return occluded;
+}
+
+namespace {
+RayPacket packetOf(const Ray* rays, int count) {
+    RayPacket packet;
+    for (int i = 0; i < count; ++i) {
+        packet.set(i, rays[i]);
+    }
+    return packet;
+}
+} // namespace
+
 void closestHit8(const Bvh& bvh, const Ray* rays, int count, Hit* hits) {
     if (count <= 0) {
         return;
     }
-    if (bvh.wideNodes.empty()) {
-        for (int i = 0; i < count; ++i) {
-            hits[i] = closestHit(bvh, rays[i]);
-        }
-        return;
-    }
-    for (unsigned m = closestHitPacket(bvh, rays, count, hits); m != 0; m &= m - 1) {
-        const int i = __builtin_ctz(m);
-        hits[i] = closestHit(bvh, rays[i]);
+    HitPacket packetHits;
+    closestHit8(bvh, packetOf(rays, count), packetHits);
+    for (int i = 0; i < count; ++i) {
+        hits[i] = packetHits.hit(i);
     }
 }
 
@@ -28,15 +61,9 @@ void anyHit8(const Bvh& bvh, const Ray* rays, int count, bool* occluded) {
     if (count <= 0) {
         return;
     }
-    if (bvh.wideNodes.empty()) {
-        for (int i = 0; i < count; ++i) {
-            occluded[i] = anyHit(bvh, rays[i]);
-        }
-        return;
-    }
-    for (unsigned m = anyHitPacket(bvh, rays, count, occluded); m != 0; m &= m - 1) {
-        const int i = __builtin_ctz(m);
-        occluded[i] = anyHit(bvh, rays[i]);
+    const unsigned answers = anyHit8(bvh, packetOf(rays, count));
+    for (int i = 0; i < count; ++i) {
+        occluded[i] = ((answers >> i) & 1u) != 0;
     }
 }
 

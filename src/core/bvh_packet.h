@@ -1,20 +1,23 @@
 #pragma once
 // Packets of up to 8 rays traced together through the BVH: for coherent rays (the primary rays
 // of a block of pixels, the shadow rays of their hits towards one light) one traversal serves
-// all of them. Every answer is exactly the single-ray one: hits[i] is closestHit(bvh, rays[i])
-// bit for bit (t, u, v, triangle), occluded[i] is anyHit(bvh, rays[i]).
+// all of them. Every answer is exactly the single-ray one: lane i's hit is closestHit(bvh, ray i)
+// bit for bit (t, u, v, triangle), its any-hit answer is anyHit(bvh, ray i).
 
 #include "bvh.h"
-#include "ray.h"
+#include "ray_packet.h"
 
 namespace raylab {
 
-inline constexpr int kPacketSize = 8;
+// Closest hits of the lanes of rays.lanes; every other lane of hits gets Hit{}.
+void closestHit8(const Bvh& bvh, const RayPacket& rays, HitPacket& hits);
 
-// Closest hits of rays[0, count), 0 <= count <= kPacketSize, into hits[0, count).
+// The lanes of rays.lanes whose ray hits a triangle (bit i: lane i).
+unsigned anyHit8(const Bvh& bvh, const RayPacket& rays);
+
+// The same for Ray records: rays[0, count) into hits[0, count) or occluded[0, count),
+// 0 <= count <= kPacketSize.
 void closestHit8(const Bvh& bvh, const Ray* rays, int count, Hit* hits);
-
-// Any-hit answers of rays[0, count), 0 <= count <= kPacketSize, into occluded[0, count).
 void anyHit8(const Bvh& bvh, const Ray* rays, int count, bool* occluded);
 
 } // namespace raylab

@@ -146,23 +146,27 @@ RAYLAB_AVX2 inline void keepCloser(PacketBest& best, const LaneHits& h, unsigned
                                        _mm256_castps_si256(mask));
 }
 
-// Lane l of best, written as a Hit.
-RAYLAB_AVX2 inline void writeBest(const PacketBest& best, unsigned lanes, Hit* hits) {
-    alignas(32) float t[kWideLanes], u[kWideLanes], v[kWideLanes];
-    alignas(32) uint32_t triangle[kWideLanes];
-    _mm256_store_ps(t, best.t);
-    _mm256_store_ps(u, _mm256_div_ps(best.e1, best.det));
-    _mm256_store_ps(v, _mm256_div_ps(best.e2, best.det));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(triangle), best.triangle);
-    for (unsigned m = lanes; m != 0; m &= m - 1) {
-        const int l = __builtin_ctz(m);
-        hits[l] = triangle[l] == kNoTriangle ? Hit{} : Hit{t[l], u[l], v[l], triangle[l]};
-    }
+// The lanes of `lanes` that found a triangle, written into hits (the others keep what they hold).
+RAYLAB_AVX2 inline void writeBest(const PacketBest& best, unsigned lanes, HitPacket& hits) {
+    const __m256i bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+    const __m256i found = _mm256_andnot_si256(
+        _mm256_cmpeq_epi32(best.triangle, _mm256_set1_epi32(-1)),
+        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(lanes)), bits),
+                           bits));
+    const __m256 write = _mm256_castsi256_ps(found);
+    _mm256_store_ps(hits.t, _mm256_blendv_ps(_mm256_load_ps(hits.t), best.t, write));
+    _mm256_store_ps(
+        hits.u, _mm256_blendv_ps(_mm256_load_ps(hits.u), _mm256_div_ps(best.e1, best.det), write));
+    _mm256_store_ps(
+        hits.v, _mm256_blendv_ps(_mm256_load_ps(hits.v), _mm256_div_ps(best.e2, best.det), write));
+    __m256i* triangle = reinterpret_cast<__m256i*>(hits.triangle);
+    _mm256_store_si256(triangle,
+                       _mm256_blendv_epi8(_mm256_load_si256(triangle), best.triangle, found));
 }
 
 // Tests lane l's exact-fallback triangle and keeps it when closer.
 RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& block, int tri,
-                                  const Ray* rays, unsigned lanes) {
+                                  const RayPacket& rays, unsigned lanes) {
     alignas(32) float bt[kWideLanes], e1[kWideLanes], e2[kWideLanes], det[kWideLanes];
     alignas(32) uint32_t bi[kWideLanes];
     _mm256_store_ps(bt, best.t);
@@ -174,7 +178,7 @@ RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& bloc
     for (unsigned m = lanes; m != 0; m &= m - 1) {
         const int l = __builtin_ctz(m);
         float t, u, v;
-        if (intersectLane(block, tri, rays[l], t, u, v) &&
+        if (intersectLane(block, tri, rays.ray(l), t, u, v) &&
             (t < bt[l] || (t == bt[l] && index < bi[l]))) {
             bt[l] = t;
             e1[l] = u;
@@ -192,12 +196,10 @@ RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& bloc
 
 } // namespace
 
-RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const Ray* rays, int count, Hit* hits) {
+RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
     PacketRays p;
-    makePacket(rays, count, p);
-    for (int i = 0; i < count; ++i) {
-        hits[i] = Hit{};
-    }
+    makePacket(rays, p);
+    hits.clear();
     const unsigned lanes = p.lanes;
     if (lanes == 0) {
         return p.others;
@@ -259,12 +261,10 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const Ray* rays, int count
     }
 }
 
-RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const Ray* rays, int count, bool* occluded) {
+RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded) {
     PacketRays p;
-    makePacket(rays, count, p);
-    for (int i = 0; i < count; ++i) {
-        occluded[i] = false;
-    }
+    makePacket(rays, p);
+    occluded = 0;
     const unsigned lanes = p.lanes;
     if (lanes == 0) {
         return p.others;
@@ -298,7 +298,7 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const Ray* rays, int count, bo
                     for (unsigned m = h.exact & active & ~hit; m != 0; m &= m - 1) {
                         const int l = __builtin_ctz(m);
                         float t, u, v;
-                        if (intersectLane(*block, tri, rays[l], t, u, v)) {
+                        if (intersectLane(*block, tri, rays.ray(l), t, u, v)) {
                             hit |= 1u << l;
                         }
                     }
@@ -327,10 +327,7 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const Ray* rays, int count, bo
             break;
         }
     }
-    for (unsigned m = lanes; m != 0; m &= m - 1) {
-        const int l = __builtin_ctz(m);
-        occluded[l] = ((found >> l) & 1u) != 0;
-    }
+    occluded = found & lanes;
     return p.others;
 }
 
@@ -339,8 +336,8 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const Ray* rays, int count, bo
 #else // not x86: buildBvh never builds the wide form, so these are never called.
 
 namespace raylab {
-unsigned closestHitPacket(const Bvh&, const Ray*, int, Hit*) { return 0; }
-unsigned anyHitPacket(const Bvh&, const Ray*, int, bool*) { return 0; }
+unsigned closestHitPacket(const Bvh&, const RayPacket&, HitPacket&) { return 0; }
+unsigned anyHitPacket(const Bvh&, const RayPacket&, unsigned&) { return 0; }
 } // namespace raylab
 
 #endif

@@ -2,23 +2,18 @@
 // Per-lane constants of a packet of up to 8 rays (internal to bvh_packet_avx2.cpp, which is the
 // only file that may include this: it uses AVX2 and must only run on CPUs that have it).
 //
-// The rays are loaded as eight 32-byte rows and transposed, so each field of the 8 rays is one
-// register. The lanes that trace together are the valid ones (WatertightRay's test) sharing the
+// Each field of the 8 rays (RayPacket, structure of arrays) is one register. The lanes that
+// trace together are the valid ones (WatertightRay's test) sharing the
 // most common ray permutation; the other lanes keep whatever they hold and are never read back.
 
 #include "bvh_box_ray.h"
 #include "bvh_wide.h"
-#include "ray.h"
+#include "ray_packet.h"
 #include "watertight_avx2.h"
 
-#include <cstddef>
 #include <immintrin.h>
 
 namespace raylab {
-
-static_assert(sizeof(Ray) == 8 * sizeof(float) && offsetof(Ray, direction) == 12 &&
-                  offsetof(Ray, tMin) == 24 && offsetof(Ray, tMax) == 28,
-              "a Ray is one row of 8 floats: origin, direction, tMin, tMax");
 
 struct PacketRays {
     unsigned lanes = 0;           // lanes traced as a packet
@@ -31,47 +26,24 @@ struct PacketRays {
     int vertexOffset[3]; // k[i] * 8: where axis k[i] starts in a BvhTriangleBlock vertex
 };
 
-// r[i] = row i (ray i) in, r[j] = field j of the 8 rays out.
-RAYLAB_AVX2 inline void transpose8(__m256 (&r)[8]) {
-    __m256 t[8], s[8];
-    for (int i = 0; i < 8; i += 2) {
-        t[i] = _mm256_unpacklo_ps(r[i], r[i + 1]);
-        t[i + 1] = _mm256_unpackhi_ps(r[i], r[i + 1]);
-    }
-    for (int i = 0; i < 8; i += 4) {
-        s[i] = _mm256_shuffle_ps(t[i], t[i + 2], _MM_SHUFFLE(1, 0, 1, 0));
-        s[i + 1] = _mm256_shuffle_ps(t[i], t[i + 2], _MM_SHUFFLE(3, 2, 3, 2));
-        s[i + 2] = _mm256_shuffle_ps(t[i + 1], t[i + 3], _MM_SHUFFLE(1, 0, 1, 0));
-        s[i + 3] = _mm256_shuffle_ps(t[i + 1], t[i + 3], _MM_SHUFFLE(3, 2, 3, 2));
-    }
-    for (int i = 0; i < 4; ++i) {
-        r[i] = _mm256_permute2f128_ps(s[i], s[i + 4], 0x20);
-        r[i + 4] = _mm256_permute2f128_ps(s[i], s[i + 4], 0x31);
-    }
-}
-
 // Lanes whose value is finite (not NaN, not +-inf).
 RAYLAB_AVX2 inline __m256 isFinite8(__m256 x) {
     return _mm256_cmp_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), x), _mm256_set1_ps(kInfinity),
                          _CMP_LT_OQ);
 }
 
-// Fills p for rays[0, count), 1 <= count <= 8. The validity test and the permutation are
+// Fills p for the lanes of rays.lanes. The validity test and the permutation are
 // WatertightRay's constructor's (triangle_intersection.cpp), and so are the shear quotients,
 // lane by lane: kz is the axis of the largest |d| (the first of equal ones as there), kx and ky
 // follow cyclically and swap when d[kz] < 0.
-RAYLAB_AVX2 inline void makePacket(const Ray* rays, int count, PacketRays& p) {
+RAYLAB_AVX2 inline void makePacket(const RayPacket& rays, PacketRays& p) {
     __m256 f[8];
-    if (count == 8) {
-        for (int i = 0; i < 8; ++i) {
-            f[i] = _mm256_loadu_ps(&rays[i].origin.x);
-        }
-    } else {
-        for (int i = 0; i < 8; ++i) {
-            f[i] = i < count ? _mm256_loadu_ps(&rays[i].origin.x) : _mm256_setzero_ps();
-        }
+    for (int a = 0; a < 3; ++a) {
+        f[a] = _mm256_load_ps(rays.origin[a]);
+        f[3 + a] = _mm256_load_ps(rays.direction[a]);
     }
-    transpose8(f);
+    f[6] = _mm256_load_ps(rays.tMin);
+    f[7] = _mm256_load_ps(rays.tMax);
     const __m256* o = f;
     const __m256* d = f + 3;
     const __m256 zero = _mm256_setzero_ps();
@@ -92,8 +64,7 @@ RAYLAB_AVX2 inline void makePacket(const Ray* rays, int count, PacketRays& p) {
     const __m256 isX = _mm256_and_ps(xy, _mm256_cmp_ps(ax, az, _CMP_GT_OQ));
     const __m256 isY = _mm256_andnot_ps(xy, _mm256_cmp_ps(ay, az, _CMP_GT_OQ));
     const __m256 dkz = _mm256_blendv_ps(_mm256_blendv_ps(d[2], d[1], isY), d[0], isX);
-    const unsigned inPacket = (1u << count) - 1u;
-    const unsigned validLanes = static_cast<unsigned>(_mm256_movemask_ps(valid)) & inPacket;
+    const unsigned validLanes = static_cast<unsigned>(_mm256_movemask_ps(valid)) & rays.lanes;
     const unsigned x = static_cast<unsigned>(_mm256_movemask_ps(isX));
     const unsigned y = static_cast<unsigned>(_mm256_movemask_ps(isY));
     const unsigned negative =

@@ -3,15 +3,16 @@
 // bvh.wideNodes is not empty.
 
 #include "bvh.h"
-#include "ray.h"
+#include "ray_packet.h"
 
 namespace raylab {
 
-// Traces, as one packet, the valid rays of rays[0, count) (1 <= count <= 8) that share the most
-// common ray permutation of the watertight test (WatertightRay::kx, ky, kz), and writes their
-// hits[i] (occluded[i]); rays WatertightRay calls invalid get Hit{} (false). Returns the lanes
-// it did not answer (valid rays with another permutation), for the single-ray path.
-unsigned closestHitPacket(const Bvh& bvh, const Ray* rays, int count, Hit* hits);
-unsigned anyHitPacket(const Bvh& bvh, const Ray* rays, int count, bool* occluded);
+// Traces, as one packet, the valid rays of rays.lanes that share the most common ray
+// permutation of the watertight test (WatertightRay::kx, ky, kz). Every lane of hits is written:
+// Hit{} unless the lane was traced and found a triangle; `occluded` gets the traced lanes that
+// hit something. Returns the lanes it did not answer (valid rays with another permutation), for
+// the single-ray path.
+unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits);
+unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded);
 
 } // namespace raylab

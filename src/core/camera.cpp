@@ -17,7 +17,7 @@ constexpr float kMaxLookAtPitchDegrees = 89.9f;
 // with -ffp-contract=off), i.e. v = (right * (px - halfWidth) + up * (halfHeight - py)) +
 // forward * focal per component, then glm::normalize's v * (1 / sqrt((x*x + y*y) + z*z)).
 RAYLAB_AVX2 void through8Avx2(const PrimaryRays& p, const float* px, const float* py, int count,
-                              Ray* rays) {
+                              RayPacket& rays) {
     float xs[8] = {};
     float ys[8] = {};
     for (int i = 0; i < count; ++i) {
@@ -36,13 +36,14 @@ RAYLAB_AVX2 void through8Avx2(const PrimaryRays& p, const float* px, const float
         _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(v[0], v[0]), _mm256_mul_ps(v[1], v[1])),
                       _mm256_mul_ps(v[2], v[2]));
     const __m256 inverse = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(dot));
-    alignas(32) float d[3][8];
     for (int k = 0; k < 3; ++k) {
-        _mm256_store_ps(d[k], _mm256_mul_ps(v[k], inverse));
+        _mm256_store_ps(rays.origin[k], _mm256_set1_ps(p.origin[k]));
+        _mm256_store_ps(rays.direction[k], _mm256_mul_ps(v[k], inverse));
     }
-    for (int i = 0; i < count; ++i) {
-        rays[i] = Ray{p.origin, glm::vec3(d[0][i], d[1][i], d[2][i])};
-    }
+    const Ray defaults;
+    _mm256_store_ps(rays.tMin, _mm256_set1_ps(defaults.tMin));
+    _mm256_store_ps(rays.tMax, _mm256_set1_ps(defaults.tMax));
+    rays.lanes = firstLanes(count);
 }
 } // namespace
 
@@ -102,14 +103,15 @@ Ray PrimaryRays::through(float px, float py) const {
     return ray;
 }
 
-void PrimaryRays::through8(const float* px, const float* py, int count, Ray* rays) const {
+void PrimaryRays::through8(const float* px, const float* py, int count, RayPacket& rays) const {
     static const bool simd = bvhSimdSupported();
     if (simd) {
         through8Avx2(*this, px, py, count, rays);
         return;
     }
+    rays.lanes = 0;
     for (int i = 0; i < count; ++i) {
-        rays[i] = through(px[i], py[i]);
+        rays.set(i, through(px[i], py[i]));
     }
 }
 

@@ -4,6 +4,7 @@
 // +y up; world space is right-handed, so the image's right is -x.
 
 #include "ray.h"
+#include "ray_packet.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
@@ -45,9 +46,9 @@ struct PrimaryRays {
     // pixel (x, y)'s centre is (x + 0.5, y + 0.5). The direction is unit length.
     Ray through(float px, float py) const;
 
-    // rays[i] = through(px[i], py[i]) bit for bit, for i < count <= 8 (8 lanes at once where the
-    // CPU has AVX2; px and py are read for i < count only).
-    void through8(const float* px, const float* py, int count, Ray* rays) const;
+    // Lane i of rays = through(px[i], py[i]) bit for bit, for i < count <= 8, and rays.lanes =
+    // those lanes (8 lanes at once where the CPU has AVX2). px and py are read for i < count only.
+    void through8(const float* px, const float* py, int count, RayPacket& rays) const;
 };
 
 } // namespace raylab

@@ -9,6 +9,7 @@
 // one ray, shadeLab8 (lab_shading_packet.cpp) for a packet of rays with the same results.
 
 #include "bvh.h"
+#include "ray_packet.h"
 #include "render_settings.h"
 #include "scene.h"
 
@@ -54,8 +55,18 @@ glm::vec3 directLight(const Bvh& bvh, const RenderSettings& settings, const glm:
 glm::vec3 shadeLab(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const Ray& ray, RayCounts& counts);
 
-// radiance[i] = shadeLab(scene, bvh, settings, rays[i], counts) for i < count <= 8 (bit for bit,
-// and the same counts), with the camera rays and their shadow rays traced as packets.
+// The radiance of a packet's lanes: channel c of lane i is value[c][i].
+struct alignas(32) RadiancePacket {
+    float value[3][kPacketSize];
+};
+
+// Lane i of radiance = shadeLab(scene, bvh, settings, ray i, counts) for the lanes of
+// rays.lanes, bit for bit and with the same counts; the other lanes are black. The camera rays
+// and their shadow rays are traced as packets.
+void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+               const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts);
+
+// The same for Ray records: radiance[i] for rays[0, count), 0 <= count <= kPacketSize.
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,
                int count, glm::vec3* radiance, RayCounts& counts);
 

@@ -3,6 +3,7 @@
 // CPU has AVX2, the 8 lanes run those stages' operations side by side (shadeLanesAvx2), each
 // rounded as the scalar stage rounds it (IEEE single precision, no contraction: core builds with
 // -ffp-contract=off), so the radiance is bit for bit the scalar path's (tests/core checks it).
+// Rays, hits and shadow rays stay in structure-of-arrays form (ray_packet.h) throughout.
 
 #include "bvh_packet.h"
 #include "lab_shading.h"
@@ -14,46 +15,45 @@ namespace raylab {
 
 namespace {
 
-// The layouts shadeLanesAvx2's gathers assume.
+// The layout shadeLanesAvx2's triangle loads assume: v0, v1, v2 and the material are 10 floats,
+// so 4 floats from v0, v1 or v2 stay inside the record.
 static_assert(sizeof(Triangle) == 10 * sizeof(float) && offsetof(Triangle, v1) == 12 &&
               offsetof(Triangle, v2) == 24);
-static_assert(sizeof(Ray) == 8 * sizeof(float) && offsetof(Ray, direction) == 12);
-static_assert(sizeof(Hit) == 4 * sizeof(float) && offsetof(Hit, t) == 0 &&
-              offsetof(Hit, triangle) == 12);
 
 constexpr float kFourPi = 12.566370614359172f; // as lab_shading.cpp
 
 void shadeLanesScalar(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                      const Ray* rays, int count, const Hit* hits, glm::vec3* radiance,
+                      const RayPacket& rays, const HitPacket& hits, RadiancePacket& radiance,
                       RayCounts& counts) {
     SurfacePoint surfaces[kPacketSize];
     glm::vec3 direct[kPacketSize];
-    Ray shadowRays[kPacketSize];
-    int shadowLane[kPacketSize];
-    int shadowCount = 0;
-    for (int i = 0; i < count; ++i) {
-        if (!hits[i].found()) {
+    RayPacket shadowRays;
+    unsigned hitLanes = 0;
+    for (unsigned m = rays.lanes; m != 0; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        const Hit hit = hits.hit(i);
+        if (!hit.found()) {
             continue;
         }
-        surfaces[i] = surfaceAt(scene, rays[i], hits[i]);
+        hitLanes |= 1u << i;
+        surfaces[i] = surfaceAt(scene, rays.ray(i), hit);
         const LightSample sample = lightAt(settings, surfaces[i].point, surfaces[i].facingNormal);
         direct[i] = sample.direct;
         if (sample.needsShadowRay) {
-            shadowRays[shadowCount] = sample.shadowRay;
-            shadowLane[shadowCount++] = i;
+            shadowRays.set(i, sample.shadowRay);
         }
     }
-    bool occluded[kPacketSize];
-    anyHit8(bvh, shadowRays, shadowCount, occluded);
-    counts.shadow += static_cast<std::uint64_t>(shadowCount);
-    for (int j = 0; j < shadowCount; ++j) {
-        if (occluded[j]) {
-            direct[shadowLane[j]] = glm::vec3(0.0f);
+    const unsigned occluded = anyHit8(bvh, shadowRays);
+    counts.shadow += static_cast<std::uint64_t>(__builtin_popcount(shadowRays.lanes));
+    for (int i = 0; i < kPacketSize; ++i) {
+        glm::vec3 value(0.0f);
+        if ((hitLanes >> i) & 1u) {
+            value = labRadiance(settings, surfaces[i].rho,
+                                (occluded >> i) & 1u ? glm::vec3(0.0f) : direct[i]);
         }
-    }
-    for (int i = 0; i < count; ++i) {
-        radiance[i] =
-            hits[i].found() ? labRadiance(settings, surfaces[i].rho, direct[i]) : glm::vec3(0.0f);
+        for (int c = 0; c < 3; ++c) {
+            radiance.value[c][i] = value[c];
+        }
     }
 }
 
@@ -63,65 +63,73 @@ RAYLAB_AVX2 inline __m256 dot8(const __m256 a[3], const __m256 b[3]) {
                          _mm256_mul_ps(a[2], b[2]));
 }
 
-// base[index[i]] in the lanes of mask, 0 in the others.
-RAYLAB_AVX2 inline __m256 gather8(__m256 mask, const float* base, __m256i index) {
-    return _mm256_mask_i32gather_ps(_mm256_setzero_ps(), base, index, mask, 4);
+// All ones in the lanes whose bit is set in `lanes`.
+RAYLAB_AVX2 inline __m256 laneMask(unsigned lanes) {
+    const __m256i bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+        _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(lanes)), bits), bits));
 }
 
-// surfaceAt, lightAt and labRadiance for 8 lanes; lanes that missed (or >= count) give black.
+// out[axis] = the vector at rows[lane] + offset for the 8 lanes: 8 unaligned 4-float loads
+// (the fourth float is read and dropped) and a transpose, cheaper than gathers.
+RAYLAB_AVX2 inline void loadVectors(const float* const rows[8], int offset, __m256 out[3]) {
+    __m256 r[4];
+    for (int i = 0; i < 4; ++i) {
+        r[i] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[i] + offset)),
+                                    _mm_loadu_ps(rows[i + 4] + offset), 1);
+    }
+    const __m256 xy01 = _mm256_unpacklo_ps(r[0], r[1]);
+    const __m256 zw01 = _mm256_unpackhi_ps(r[0], r[1]);
+    const __m256 xy23 = _mm256_unpacklo_ps(r[2], r[3]);
+    const __m256 zw23 = _mm256_unpackhi_ps(r[2], r[3]);
+    out[0] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
+    out[1] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
+    out[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
+}
+
+// surfaceAt, lightAt and labRadiance for 8 lanes; lanes that missed (or hold no ray) give black.
 RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                                const Ray* rays, int count, const Hit* hits, glm::vec3* radiance,
-                                RayCounts& counts) {
-    // Lane inputs, gathered into structure-of-arrays form; lanes without a hit read nothing and
-    // hold zeros (their results are masked out).
-    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256i active = _mm256_cmpgt_epi32(_mm256_set1_epi32(count), lane);
-    const __m256i triangle = _mm256_mask_i32gather_epi32(
-        _mm256_set1_epi32(-1), reinterpret_cast<const int*>(&hits[0].triangle),
-        _mm256_slli_epi32(lane, 2), active, 4);
-    const __m256i found =
-        _mm256_andnot_si256(_mm256_cmpeq_epi32(triangle, _mm256_set1_epi32(-1)), active);
-    const unsigned hitLanes = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(found)));
+                                const RayPacket& rays, const HitPacket& hits,
+                                RadiancePacket& radiance, RayCounts& counts) {
+    // closestHit8 leaves kNoTriangle in the lanes without a ray or a hit.
+    const __m256i triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(hits.triangle));
+    const __m256 foundMask = _mm256_castsi256_ps(_mm256_xor_si256(
+        _mm256_cmpeq_epi32(triangle, _mm256_set1_epi32(-1)), _mm256_set1_epi32(-1)));
+    const unsigned hitLanes = static_cast<unsigned>(_mm256_movemask_ps(foundMask));
+    const __m256 zero = _mm256_setzero_ps();
     if (hitLanes == 0) {
-        for (int i = 0; i < count; ++i) {
-            radiance[i] = glm::vec3(0.0f);
+        for (int c = 0; c < 3; ++c) {
+            _mm256_store_ps(radiance.value[c], zero);
         }
         return;
     }
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 foundMask = _mm256_castsi256_ps(found);
-    // Triangle records are 10 floats (v0, v1, v2, material); rays 8 (origin, direction, tMin,
-    // tMax); hits 4 (t, u, v, triangle).
-    const __m256i triangleBase = _mm256_and_si256(
-        _mm256_add_epi32(_mm256_slli_epi32(triangle, 3), _mm256_slli_epi32(triangle, 1)), found);
-    const float* vertices = &scene.triangles[0].v0.x;
-    const __m256i rayBase = _mm256_slli_epi32(lane, 3);
-    const float* rayFloats = &rays[0].origin.x;
-    __m256 dir[3], e1[3], e2[3], o[3];
-    for (int k = 0; k < 3; ++k) {
-        o[k] = gather8(foundMask, rayFloats, _mm256_add_epi32(rayBase, _mm256_set1_epi32(k)));
-        dir[k] = gather8(foundMask, rayFloats, _mm256_add_epi32(rayBase, _mm256_set1_epi32(3 + k)));
-        const __m256 a =
-            gather8(foundMask, vertices, _mm256_add_epi32(triangleBase, _mm256_set1_epi32(k)));
-        e1[k] = _mm256_sub_ps(
-            gather8(foundMask, vertices, _mm256_add_epi32(triangleBase, _mm256_set1_epi32(3 + k))),
-            a);
-        e2[k] = _mm256_sub_ps(
-            gather8(foundMask, vertices, _mm256_add_epi32(triangleBase, _mm256_set1_epi32(6 + k))),
-            a);
-    }
-    const __m256 t =
-        _mm256_mask_i32gather_ps(zero, &hits[0].t, _mm256_slli_epi32(lane, 2), foundMask, 4);
-    alignas(32) float rho[3][8] = {};
-    for (unsigned m = hitLanes; m != 0; m &= m - 1) {
-        const int i = __builtin_ctz(m);
-        const glm::vec3& diffuse =
-            scene.materials[scene.triangles[hits[i].triangle].material].diffuse;
+    // Lanes without a hit read the first hit lane's triangle; their results are masked out.
+    const Triangle* triangles = scene.triangles.data();
+    const float* rows[kPacketSize];
+    alignas(32) float rho[3][kPacketSize];
+    const uint32_t fallback = hits.triangle[__builtin_ctz(hitLanes)];
+    for (int i = 0; i < kPacketSize; ++i) {
+        const Triangle& tri = triangles[(hitLanes >> i) & 1u ? hits.triangle[i] : fallback];
+        rows[i] = &tri.v0.x;
+        const glm::vec3& diffuse = scene.materials[tri.material].diffuse;
         rho[0][i] = diffuse.x;
         rho[1][i] = diffuse.y;
         rho[2][i] = diffuse.z;
     }
+    __m256 v0[3], v1[3], v2[3];
+    loadVectors(rows, 0, v0);
+    loadVectors(rows, 3, v1);
+    loadVectors(rows, 6, v2);
+    __m256 dir[3], e1[3], e2[3], o[3];
+    for (int k = 0; k < 3; ++k) {
+        o[k] = _mm256_load_ps(rays.origin[k]);
+        dir[k] = _mm256_load_ps(rays.direction[k]);
+        e1[k] = _mm256_sub_ps(v1[k], v0[k]);
+        e2[k] = _mm256_sub_ps(v2[k], v0[k]);
+    }
+    const __m256 t = _mm256_load_ps(hits.t);
     const __m256 signBit = _mm256_set1_ps(-0.0f);
+    // geometricNormal: normalize(cross(e1, e2)), (0, 0, 0) when the length is 0 or not finite.
     __m256 n[3];
     for (int k = 0; k < 3; ++k) {
         const int k1 = (k + 1) % 3;
@@ -156,73 +164,57 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
     const __m256 scale =
         _mm256_div_ps(cosine, _mm256_mul_ps(_mm256_set1_ps(kFourPi), distanceSquared));
     const glm::vec3 power = settings.light.power();
-    __m256 direct[3];
-    for (int k = 0; k < 3; ++k) {
-        direct[k] = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(power[k]), scale), lit);
-    }
     unsigned litLanes = static_cast<unsigned>(_mm256_movemask_ps(lit)) & hitLanes;
     if (settings.shadows && litLanes != 0) {
-        alignas(32) float p[3][8], l[3][8], tMax[8];
+        // The shadow rays of the lit lanes, in their own lanes: eps < t < |r| - eps.
+        RayPacket shadowRays;
         for (int k = 0; k < 3; ++k) {
-            _mm256_store_ps(p[k], point[k]);
-            _mm256_store_ps(l[k], toLight[k]);
+            _mm256_store_ps(shadowRays.origin[k], point[k]);
+            _mm256_store_ps(shadowRays.direction[k], toLight[k]);
         }
         const float epsilon = settings.shadowEpsilon;
-        _mm256_store_ps(tMax, _mm256_sub_ps(distance, _mm256_set1_ps(epsilon)));
-        Ray shadowRays[kPacketSize];
-        int shadowLane[kPacketSize];
-        int shadowCount = 0;
-        for (unsigned m = litLanes; m != 0; m &= m - 1) {
-            const int i = __builtin_ctz(m);
-            shadowRays[shadowCount] = Ray{glm::vec3(p[0][i], p[1][i], p[2][i]),
-                                          glm::vec3(l[0][i], l[1][i], l[2][i]), epsilon, tMax[i]};
-            shadowLane[shadowCount++] = i;
-        }
-        bool occluded[kPacketSize];
-        anyHit8(bvh, shadowRays, shadowCount, occluded);
-        counts.shadow += static_cast<std::uint64_t>(shadowCount);
-        for (int j = 0; j < shadowCount; ++j) {
-            if (occluded[j]) {
-                litLanes &= ~(1u << shadowLane[j]);
-            }
-        }
-        alignas(32) int keep[8];
-        for (int i = 0; i < 8; ++i) {
-            keep[i] = (litLanes >> i) & 1u ? -1 : 0;
-        }
-        const __m256 keepMask =
-            _mm256_castsi256_ps(_mm256_load_si256(reinterpret_cast<const __m256i*>(keep)));
-        for (int k = 0; k < 3; ++k) {
-            direct[k] = _mm256_and_ps(direct[k], keepMask);
-        }
+        _mm256_store_ps(shadowRays.tMin, _mm256_set1_ps(epsilon));
+        _mm256_store_ps(shadowRays.tMax, _mm256_sub_ps(distance, _mm256_set1_ps(epsilon)));
+        shadowRays.lanes = litLanes;
+        counts.shadow += static_cast<std::uint64_t>(__builtin_popcount(litLanes));
+        litLanes &= ~anyHit8(bvh, shadowRays);
     }
-    // labRadiance: R = rho * (D + N).
+    // labRadiance: R = rho * (D + N), black where nothing was hit.
+    const __m256 keep = laneMask(litLanes);
     const glm::vec3 indirect = settings.indirect3();
-    alignas(32) float out[3][8];
     for (int k = 0; k < 3; ++k) {
-        _mm256_store_ps(out[k],
-                        _mm256_mul_ps(_mm256_load_ps(rho[k]),
-                                      _mm256_add_ps(direct[k], _mm256_set1_ps(indirect[k]))));
-    }
-    for (int i = 0; i < count; ++i) {
-        radiance[i] =
-            (hitLanes >> i) & 1u ? glm::vec3(out[0][i], out[1][i], out[2][i]) : glm::vec3(0.0f);
+        const __m256 direct = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(power[k]), scale), keep);
+        const __m256 value = _mm256_mul_ps(_mm256_load_ps(rho[k]),
+                                           _mm256_add_ps(direct, _mm256_set1_ps(indirect[k])));
+        _mm256_store_ps(radiance.value[k], _mm256_and_ps(value, foundMask));
     }
 }
 
 } // namespace
 
+void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+               const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts) {
+    HitPacket hits;
+    closestHit8(bvh, rays, hits);
+    counts.primary += static_cast<std::uint64_t>(__builtin_popcount(rays.lanes));
+    static const bool simd = bvhSimdSupported();
+    if (simd) {
+        shadeLanesAvx2(scene, bvh, settings, rays, hits, radiance, counts);
+    } else {
+        shadeLanesScalar(scene, bvh, settings, rays, hits, radiance, counts);
+    }
+}
+
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,
                int count, glm::vec3* radiance, RayCounts& counts) {
-    Hit hits[kPacketSize];
-    closestHit8(bvh, rays, count, hits);
-    counts.primary += static_cast<std::uint64_t>(count);
-    static const bool simd = bvhSimdSupported();
-    // The gathers index triangles' floats with 32-bit integers.
-    if (simd && scene.triangles.size() < (std::size_t{1} << 27)) {
-        shadeLanesAvx2(scene, bvh, settings, rays, count, hits, radiance, counts);
-    } else {
-        shadeLanesScalar(scene, bvh, settings, rays, count, hits, radiance, counts);
+    RayPacket packet;
+    for (int i = 0; i < count; ++i) {
+        packet.set(i, rays[i]);
+    }
+    RadiancePacket values;
+    shadeLab8(scene, bvh, settings, packet, values, counts);
+    for (int i = 0; i < count; ++i) {
+        radiance[i] = glm::vec3(values.value[0][i], values.value[1][i], values.value[2][i]);
     }
 }
 

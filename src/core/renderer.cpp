@@ -2,12 +2,66 @@
 
 #include "bvh_packet.h"
 #include "camera.h"
+#include "display_transform.h"
 #include "parallel_tiles.h"
 #include "sampling.h"
+#include "watertight_avx2.h"
 
 #include <algorithm>
+#include <cassert>
 
 namespace raylab {
+
+namespace {
+
+// The image points of sample `sampleIndex` of pixels (x0 + i, y), i < count: pixel centres for
+// sample 0, else samplePixelOffset's jitter (with its row and sample hashes given as rowSeed).
+void samplePoints(int x0, int y, int count, uint32_t sampleIndex, uint32_t rowSeed, float* px,
+                  float* py) {
+    for (int i = 0; i < count; ++i) {
+        const int x = x0 + i;
+        PixelOffset offset{0.5f, 0.5f};
+        if (sampleIndex != 0) {
+            const uint32_t seed = hash32(static_cast<uint32_t>(x) ^ rowSeed);
+            offset = {unitFloat(seed), unitFloat(hash32(seed ^ 0x9e3779b9U))};
+        }
+        px[i] = static_cast<float>(x) + offset.dx;
+        py[i] = static_cast<float>(y) + offset.dy;
+    }
+}
+
+// samplePoints for 8 pixels at once, the same integer hash and the same float operations.
+RAYLAB_AVX2 inline __m256i hash32x8(__m256i x) {
+    x = _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
+    x = _mm256_mullo_epi32(x, _mm256_set1_epi32(0x7feb352d));
+    x = _mm256_xor_si256(x, _mm256_srli_epi32(x, 15));
+    x = _mm256_mullo_epi32(x, _mm256_set1_epi32(static_cast<int>(0x846ca68bU)));
+    return _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
+}
+
+RAYLAB_AVX2 inline __m256 unitFloat8(__m256i bits) {
+    return _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(bits, 8)),
+                         _mm256_set1_ps(0x1.0p-24f));
+}
+
+RAYLAB_AVX2 void samplePoints8(int x0, int y, uint32_t sampleIndex, uint32_t rowSeed, float* px,
+                               float* py) {
+    const __m256i x =
+        _mm256_add_epi32(_mm256_set1_epi32(x0), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    __m256 dx = _mm256_set1_ps(0.5f);
+    __m256 dy = _mm256_set1_ps(0.5f);
+    if (sampleIndex != 0) {
+        const __m256i seed =
+            hash32x8(_mm256_xor_si256(x, _mm256_set1_epi32(static_cast<int>(rowSeed))));
+        dx = unitFloat8(seed);
+        dy = unitFloat8(
+            hash32x8(_mm256_xor_si256(seed, _mm256_set1_epi32(static_cast<int>(0x9e3779b9U)))));
+    }
+    _mm256_storeu_ps(px, _mm256_add_ps(_mm256_cvtepi32_ps(x), dx));
+    _mm256_storeu_ps(py, _mm256_add_ps(_mm256_set1_ps(static_cast<float>(y)), dy));
+}
+
+} // namespace
 
 bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                     uint32_t sampleIndex, std::span<glm::vec3> sums, RayCounts* counts,
@@ -17,6 +71,11 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
     std::atomic<uint64_t> primary{0};
     std::atomic<uint64_t> shadow{0};
     const uint32_t sampleSeed = hash32(sampleIndex);
+    static const bool simd = bvhSimdSupported();
+    // The same operation the viewer and render() apply to sums: sum * (1 / n).
+    const float displayScale = 1.0f / static_cast<float>(sampleIndex + 1);
+    assert(options.displayRgba.empty() ||
+           options.displayRgba.size() >= 4 * static_cast<std::size_t>(width) * settings.height);
 
     TileLoopOptions loop;
     loop.threads = settings.threads;
@@ -29,8 +88,8 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
     const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
         RayCounts tileCounts;
         // Runs of up to 8 pixels along a row, traced as one packet (shadeLab8).
-        Ray packet[kPacketSize];
-        glm::vec3 radiance[kPacketSize];
+        RayPacket packet;
+        RadiancePacket radiance;
         float px[kPacketSize];
         float py[kPacketSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
@@ -38,22 +97,27 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
             const uint32_t rowSeed = hash32(static_cast<uint32_t>(y) ^ sampleSeed);
             for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketSize) {
                 const int count = std::min(kPacketSize, tile.x1 - x0);
-                for (int i = 0; i < count; ++i) {
-                    const int x = x0 + i;
-                    PixelOffset offset{0.5f, 0.5f};
-                    if (sampleIndex != 0) {
-                        const uint32_t seed = hash32(static_cast<uint32_t>(x) ^ rowSeed);
-                        offset = {unitFloat(seed), unitFloat(hash32(seed ^ 0x9e3779b9U))};
-                    }
-                    px[i] = static_cast<float>(x) + offset.dx;
-                    py[i] = static_cast<float>(y) + offset.dy;
+                if (simd && count == kPacketSize) {
+                    samplePoints8(x0, y, sampleIndex, rowSeed, px, py);
+                } else {
+                    samplePoints(x0, y, count, sampleIndex, rowSeed, px, py);
                 }
                 rays.through8(px, py, count, packet);
-                shadeLab8(scene, bvh, settings, packet, count, radiance, tileCounts);
+                shadeLab8(scene, bvh, settings, packet, radiance, tileCounts);
                 glm::vec3* row = &sums[static_cast<std::size_t>(y) * width + x0];
                 for (int i = 0; i < count; ++i) {
-                    row[i] += radiance[i];
+                    row[i] +=
+                        glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
                 }
+            }
+        }
+        if (!options.displayRgba.empty()) {
+            for (int y = tile.y0; y < tile.y1; ++y) {
+                const std::size_t first = static_cast<std::size_t>(y) * width + tile.x0;
+                const std::size_t count = static_cast<std::size_t>(tile.x1 - tile.x0);
+                toRgba8(std::span<const glm::vec3>(sums).subspan(first, count), displayScale,
+                        settings.display, settings.exposure,
+                        options.displayRgba.subspan(4 * first, 4 * count));
             }
         }
         primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);

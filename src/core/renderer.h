@@ -21,10 +21,15 @@ struct PassOptions {
     const std::atomic<bool>* cancel = nullptr; // checked between tiles
     // Called on the calling thread with the fraction of the pass done, in [0, 1].
     std::function<void(double fraction)> progress;
+    // When not empty (4 * width * height bytes): as soon as the pass has added its samples to a
+    // tile, the tile's pixels are written here, on the tile's thread, exactly as
+    // toRgba8(sums, 1 / (sampleIndex + 1), settings.display, settings.exposure) writes them.
+    std::span<uint8_t> displayRgba;
 };
 
 // Adds sample `sampleIndex` (0 = the pixel centre) of every pixel to sums (width * height,
-// row-major from the top). Returns false, leaving sums partly updated, when cancelled.
+// row-major from the top), which must hold samples 0 to sampleIndex - 1. Returns false, leaving
+// sums partly updated, when cancelled.
 bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                     uint32_t sampleIndex, std::span<glm::vec3> sums, RayCounts* counts = nullptr,
                     const PassOptions& options = {});

@@ -165,6 +165,37 @@ TEST(BvhPacket, PartiallyFilledPackets) {
     EXPECT_FALSE(untouched[0].found());
 }
 
+// A RayPacket with gaps in its lanes (as the shadow rays of the lit hits are traced): the lanes
+// in the mask answer as single rays, the others get Hit{} and no occlusion, whatever they hold.
+TEST(BvhPacket, LaneMasksWithGaps) {
+    const Bvh bvh = buildBvh(makeCornellBox());
+    const std::vector<Ray> rays = cameraRays(Camera{}, 64, 32);
+    int answered = 0;
+    for (unsigned mask = 0; mask < 256; ++mask) {
+        RayPacket packet;
+        for (int i = 0; i < kPacketSize; ++i) {
+            packet.set(i, rays[(mask * 37 + static_cast<unsigned>(i) * 5) % rays.size()]);
+        }
+        packet.lanes = mask;
+        HitPacket hits;
+        hits.set(0, Hit{1.0f, 0.5f, 0.5f, 3}); // stale contents must be overwritten
+        closestHit8(bvh, packet, hits);
+        const unsigned occluded = anyHit8(bvh, packet);
+        EXPECT_EQ(occluded & ~mask, 0u);
+        for (int i = 0; i < kPacketSize; ++i) {
+            if ((mask >> i) & 1u) {
+                const Ray ray = packet.ray(i);
+                ASSERT_TRUE(sameHit(hits.hit(i), closestHitScalar(bvh, ray))) << mask;
+                ASSERT_EQ(((occluded >> i) & 1u) != 0, anyHitScalar(bvh, ray)) << mask;
+                ++answered;
+            } else {
+                ASSERT_FALSE(hits.hit(i).found()) << "lane " << i << " of mask " << mask;
+            }
+        }
+    }
+    EXPECT_EQ(answered, 256 * 4);
+}
+
 TEST(BvhPacket, ShadowRaysWithLimitsJustBelowTheHit) {
     const Bvh bvh = buildBvh(makeHeightField(64, 20));
     std::vector<Ray> rays = cameraRays(Camera{}, 64, 32);

@@ -56,5 +56,39 @@ TEST(LabShadingPacket, SoupSeenFromOutside) {
     expectPacketShadingEqualsSingle(makeTriangleSoup(5000, 0.1f, 31), settings);
 }
 
+// Packets whose lanes have gaps: the lanes outside the mask are black and not counted, whatever
+// they hold; the others are shadeLab's.
+TEST(LabShadingPacket, LaneMasksWithGaps) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings settings;
+    const PrimaryRays primary(settings.camera, 64, 64);
+    int lit = 0;
+    for (unsigned mask = 0; mask < 256; ++mask) {
+        RayPacket packet;
+        for (int i = 0; i < kPacketSize; ++i) {
+            packet.set(i, primary.through(static_cast<float>((mask * 7 + i * 9) % 64) + 0.5f,
+                                          static_cast<float>((mask * 3 + i) % 64) + 0.5f));
+        }
+        packet.lanes = mask;
+        RadiancePacket radiance;
+        RayCounts packets, single;
+        shadeLab8(scene, bvh, settings, packet, radiance, packets);
+        for (int i = 0; i < kPacketSize; ++i) {
+            const glm::vec3 value(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
+            if ((mask >> i) & 1u) {
+                const glm::vec3 expected = shadeLab(scene, bvh, settings, packet.ray(i), single);
+                ASSERT_EQ(std::memcmp(&expected, &value, sizeof(glm::vec3)), 0) << mask;
+                lit += value.x > 0.0f ? 1 : 0;
+            } else {
+                ASSERT_EQ(value, glm::vec3(0.0f)) << "lane " << i << " of mask " << mask;
+            }
+        }
+        ASSERT_EQ(packets.primary, single.primary);
+        ASSERT_EQ(packets.shadow, single.shadow);
+    }
+    EXPECT_GT(lit, 500);
+}
+
 } // namespace
 } // namespace raylab::accel_test

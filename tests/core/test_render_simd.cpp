@@ -53,10 +53,11 @@ TEST(RenderSimd, Through8IsThroughBitForBit) {
                             py[i] = static_cast<float>(static_cast<int>(py[i])) + 0.5f;
                         }
                     }
-                    Ray out[8];
+                    RayPacket out;
                     rays.through8(px, py, count, out);
+                    ASSERT_EQ(out.lanes, firstLanes(count));
                     for (int i = 0; i < count; ++i, ++checked) {
-                        ASSERT_TRUE(sameRay(out[i], rays.through(px[i], py[i])))
+                        ASSERT_TRUE(sameRay(out.ray(i), rays.through(px[i], py[i])))
                             << px[i] << ", " << py[i] << " fov " << fov;
                     }
                 }

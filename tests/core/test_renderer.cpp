@@ -2,9 +2,11 @@
 
 #include "core/bvh.h"
 #include "core/cornell_box.h"
+#include "core/display_transform.h"
 #include "core/renderer.h"
 #include "core/sampling.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <gtest/gtest.h>
@@ -29,6 +31,33 @@ TEST(Renderer, SameBitsWhateverTheThreadCount) {
     for (int threads : {2, 3, 8}) {
         s.threads = threads;
         EXPECT_TRUE(sameBits(render(scene, bvh, s), reference)) << threads << " threads";
+    }
+}
+
+// The display bytes a pass writes tile by tile are toRgba8 of the sums after that pass.
+TEST(Renderer, DisplayBytesWrittenDuringThePassAreThoseOfTheSums) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    for (DisplayMode mode : {DisplayMode::Lab, DisplayMode::Srgb}) {
+        RenderSettings s;
+        s.width = 83; // partial tiles on both axes
+        s.height = 45;
+        s.display = mode;
+        s.exposure = 0.5f;
+        s.threads = 2;
+        std::vector<glm::vec3> sums(83 * 45, glm::vec3(0.0f));
+        std::vector<uint8_t> during(4 * sums.size(), 7);
+        std::vector<uint8_t> after(4 * sums.size());
+        for (uint32_t sample = 0; sample < 3; ++sample) {
+            PassOptions options;
+            options.displayRgba = during;
+            ASSERT_TRUE(accumulatePass(scene, bvh, s, sample, sums, nullptr, options));
+            toRgba8(sums, 1.0f / static_cast<float>(sample + 1), mode, s.exposure, after);
+            ASSERT_EQ(during, after) << "sample " << sample;
+        }
+        EXPECT_GT(std::count(after.begin(), after.end(), 0), 0); // not a blank picture
+        EXPECT_GT(std::count_if(after.begin(), after.end(), [](uint8_t v) { return v > 20; }),
+                  1000);
     }
 }
 

@@ -1,0 +1,64 @@
+#pragma once
+// Up to 8 rays, and their hits, in structure-of-arrays form: field f of lane i is f[i], so one
+// AVX2 register loads one field of all 8 rays. This is the form the renderer's packet path keeps
+// its rays in from generation (PrimaryRays::through8) through tracing (bvh_packet.h) to shading
+// (shadeLab8), with no conversion to and from Ray records on the way.
+
+#include "ray.h"
+
+#include <cstdint>
+
+namespace raylab {
+
+inline constexpr int kPacketSize = 8;
+
+struct alignas(32) RayPacket {
+    float origin[3][kPacketSize]{};    // [axis][lane]
+    float direction[3][kPacketSize]{}; // [axis][lane]
+    float tMin[kPacketSize]{};
+    float tMax[kPacketSize]{};
+    unsigned lanes = 0; // bit i set: lane i holds a ray; the other lanes are never read back
+
+    Ray ray(int i) const {
+        return Ray{{origin[0][i], origin[1][i], origin[2][i]},
+                   {direction[0][i], direction[1][i], direction[2][i]},
+                   tMin[i],
+                   tMax[i]};
+    }
+    void set(int i, const Ray& ray) {
+        for (int a = 0; a < 3; ++a) {
+            origin[a][i] = ray.origin[a];
+            direction[a][i] = ray.direction[a];
+        }
+        tMin[i] = ray.tMin;
+        tMax[i] = ray.tMax;
+        lanes |= 1u << i;
+    }
+};
+
+// The hits of a RayPacket's lanes; a lane without a hit (or without a ray) reads as Hit{}.
+struct alignas(32) HitPacket {
+    float t[kPacketSize];
+    float u[kPacketSize];
+    float v[kPacketSize];
+    uint32_t triangle[kPacketSize];
+
+    HitPacket() { clear(); }
+    void clear() {
+        for (int i = 0; i < kPacketSize; ++i) {
+            set(i, Hit{});
+        }
+    }
+    Hit hit(int i) const { return Hit{t[i], u[i], v[i], triangle[i]}; }
+    void set(int i, const Hit& h) {
+        t[i] = h.t;
+        u[i] = h.u;
+        v[i] = h.v;
+        triangle[i] = h.triangle;
+    }
+};
+
+// Lanes [0, count) of a packet, 0 <= count <= kPacketSize.
+constexpr unsigned firstLanes(int count) { return (1u << count) - 1u; }
+
+} // namespace raylab
