@@ -86,7 +86,10 @@ struct PacketEntry {
 };
 
 // The children of a node that some lane of `active` hits, sorted nearest last by the entry
-// distance of their first hitting lane. Returns how many.
+// distance of their first hitting lane when `ordered` (closest hit), else in slot order (any
+// hit: the sort costs more than it saves there; callgrind on the shadow packets: box -3.6%,
+// Sponza -3.6%, dragon -8.7% instructions without it). Returns how many.
+template <bool ordered>
 RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const PacketRays& p, __m256 limit,
                                    unsigned active, PacketEntry* out) {
     int n = 0;
@@ -98,6 +101,10 @@ RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const PacketRays& p,
         __m256 tNear;
         const unsigned lanes = hitChild(node, c, p, limit, tNear) & active;
         if (lanes == 0) {
+            continue;
+        }
+        if constexpr (!ordered) {
+            out[n++] = PacketEntry{tNear, node.child[c], lanes};
             continue;
         }
         alignas(32) float t[kWideLanes];
@@ -215,7 +222,7 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, Hit
     for (;;) {
         if (!isLeaf(ref)) {
             PacketEntry children[kWideLanes];
-            const int n = hitChildren(bvh.wideNodes[ref], p, limit, active, children);
+            const int n = hitChildren<true>(bvh.wideNodes[ref], p, limit, active, children);
             if (n > 0) {
                 for (int i = 0; i < n - 1; ++i) {
                     stack[size++] = children[i];
@@ -277,7 +284,7 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigne
     for (;;) {
         if (!isLeaf(ref)) {
             PacketEntry children[kWideLanes];
-            const int n = hitChildren(bvh.wideNodes[ref], p, p.tMax, active, children);
+            const int n = hitChildren<false>(bvh.wideNodes[ref], p, p.tMax, active, children);
             if (n > 0) {
                 for (int i = 0; i < n - 1; ++i) {
                     stack[size++] = children[i];
