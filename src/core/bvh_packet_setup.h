@@ -74,7 +74,16 @@ RAYLAB_AVX2 inline void makePacket(const RayPacket& rays, PacketRays& p) {
     int bestKz = 0;
     unsigned best = 0;
     bool bestNegative = false;
-    for (int kz = 0; kz < 3; ++kz) {
+    if (validLanes != 0) { // the common case first: every valid lane shares the first one's
+        const unsigned first = 1u << __builtin_ctz(validLanes);
+        bestKz = (x & first) != 0 ? 0 : (y & first) != 0 ? 1 : 2;
+        bestNegative = (negative & first) != 0;
+        best = validLanes & byAxis[bestKz] & (bestNegative ? negative : ~negative);
+    }
+    if (best != validLanes) {
+        best = 0;
+    }
+    for (int kz = 0; kz < 3 && best != validLanes; ++kz) {
         for (int neg = 0; neg < 2; ++neg) {
             const unsigned group = validLanes & byAxis[kz] & (neg != 0 ? negative : ~negative);
             if (__builtin_popcount(group) > __builtin_popcount(best)) {
