@@ -33,6 +33,9 @@ GLuint compileShader(GLenum stage, const char* source, std::string& error) {
 } // namespace
 
 ImageQuad::~ImageQuad() {
+    if (framebuffer_ != 0) {
+        glDeleteFramebuffers(1, &framebuffer_);
+    }
     if (texture_ != 0) {
         glDeleteTextures(1, &texture_);
     }
@@ -81,6 +84,7 @@ bool ImageQuad::create(std::string& error) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &framebuffer_);
     return true;
 }
 
@@ -100,6 +104,11 @@ void ImageQuad::upload(const Rgba8Image& image) {
                      GL_UNSIGNED_BYTE, nullptr);
         width_ = image.width;
         height_ = image.height;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_,
+                               0);
+        blitReady_ = glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     }
     // Image row 0 goes to texture row 0; the fragment shader shows texture row 0 at the top.
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -113,10 +122,19 @@ void ImageQuad::draw(int framebufferWidth, int framebufferHeight) const {
     if (!hasImage() || framebufferWidth <= 0 || framebufferHeight <= 0) {
         return;
     }
+    glDisable(GL_SCISSOR_TEST); // the blit and the quad both honour the scissor
+    if (blitReady_ && width_ == framebufferWidth && height_ == framebufferHeight) {
+        // Texture row 0 (the image's top) is the framebuffer object's bottom row: flip in y.
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, width_, height_, 0, height_, width_, 0, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        return;
+    }
     glViewport(0, 0, framebufferWidth, framebufferHeight);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
-    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_CULL_FACE);
     glUseProgram(program_);
     glUniform2i(viewportSizeLocation_, framebufferWidth, framebufferHeight);

@@ -1,7 +1,10 @@
 #pragma once
-// The CPU image on screen: an RGBA8 texture drawn on a fullscreen quad with nearest filtering and
-// an exact texel-to-pixel mapping (shaders/quad.frag), row 0 of the image at the top.
-// Needs a current OpenGL 3.3 core context (glad loaded) for its whole life.
+// The CPU image on screen: an RGBA8 texture shown over the whole framebuffer, row 0 of the image at
+// the top, with nearest filtering and an exact texel-to-pixel mapping. When the image has the
+// framebuffer's size (resolution scale 1), it is copied with glBlitFramebuffer (flipped, 1:1)
+// from a framebuffer object holding the texture: on Mesa's llvmpipe that costs about a third of
+// the shader quad at 1280 x 720 (PERFORMANCE.md). Otherwise a fullscreen quad samples it
+// (shaders/quad.frag). Needs a current OpenGL 3.3 core context (glad loaded) for its whole life.
 
 #include "io/image_io.h"
 
@@ -17,8 +20,8 @@ public:
     ImageQuad& operator=(const ImageQuad&) = delete;
     ~ImageQuad();
 
-    // Compiles the shaders and creates the texture and vertex array. Returns false with a
-    // one-line error.
+    // Compiles the shaders and creates the texture, its framebuffer object and the vertex array.
+    // Returns false with a one-line error.
     bool create(std::string& error);
 
     // Uploads the image with glTexSubImage2D; the texture is reallocated only when the size
@@ -26,7 +29,9 @@ public:
     void upload(const Rgba8Image& image);
     bool hasImage() const { return width_ > 0 && height_ > 0; }
 
-    // Draws the image over the whole viewport (0, 0, framebufferWidth, framebufferHeight).
+    // Draws the image over the whole of the default framebuffer (0, 0, framebufferWidth,
+    // framebufferHeight), every pixel written (no clear needed when hasImage()). Leaves the
+    // default framebuffer bound for drawing and reading.
     void draw(int framebufferWidth, int framebufferHeight) const;
 
     // Seconds the last upload took (CPU side, including the driver's copy).
@@ -36,6 +41,8 @@ private:
     unsigned program_ = 0;
     unsigned vertexArray_ = 0;
     unsigned texture_ = 0;
+    unsigned framebuffer_ = 0; // reads the texture for the blit
+    bool blitReady_ = false;   // the framebuffer object is complete at the texture's size
     int viewportSizeLocation_ = -1;
     int imageLocation_ = -1;
     int width_ = 0;

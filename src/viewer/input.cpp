@@ -30,6 +30,13 @@ void InputCollector::attach(GLFWwindow* window) {
     glfwSetKeyCallback(window, &InputCollector::onKey);
     glfwSetScrollCallback(window, &InputCollector::onScroll);
     glfwSetMouseButtonCallback(window, &InputCollector::onMouseButton);
+    glfwSetCharCallback(window, &InputCollector::onChar);
+    glfwSetCursorPosCallback(window, &InputCollector::onCursor);
+    glfwSetCursorEnterCallback(window, &InputCollector::onEnter);
+    glfwSetWindowFocusCallback(window, &InputCollector::onFocus);
+    glfwSetFramebufferSizeCallback(window, &InputCollector::onSize);
+    glfwSetWindowRefreshCallback(window, &InputCollector::onRefresh);
+    glfwSetWindowIconifyCallback(window, &InputCollector::onIconify);
 }
 
 InputEvents InputCollector::take() {
@@ -39,19 +46,47 @@ InputEvents InputCollector::take() {
 }
 
 void InputCollector::onKey(GLFWwindow* window, int key, int, int action, int) {
+    InputEvents& events = collectorOf(window)->events_;
+    events.keyboard = true;
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        collectorOf(window)->events_.keys.push_back(key);
+        events.keys.push_back(key);
     }
 }
 
 void InputCollector::onScroll(GLFWwindow* window, double, double dy) {
-    collectorOf(window)->events_.scroll += dy;
+    InputEvents& events = collectorOf(window)->events_;
+    events.other = true;
+    events.scroll += dy;
 }
 
 void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, int) {
+    InputEvents& events = collectorOf(window)->events_;
+    events.other = true;
     if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) {
-        collectorOf(window)->events_.leftPressed = true;
+        events.leftPressed = true;
     }
+}
+
+void InputCollector::onChar(GLFWwindow* window, unsigned int) {
+    collectorOf(window)->events_.keyboard = true;
+}
+
+void InputCollector::onCursor(GLFWwindow* window, double, double) {
+    collectorOf(window)->events_.other = true;
+}
+
+void InputCollector::onEnter(GLFWwindow* window, int) { collectorOf(window)->events_.other = true; }
+
+void InputCollector::onFocus(GLFWwindow* window, int) { collectorOf(window)->events_.other = true; }
+
+void InputCollector::onSize(GLFWwindow* window, int, int) {
+    collectorOf(window)->events_.other = true;
+}
+
+void InputCollector::onRefresh(GLFWwindow* window) { collectorOf(window)->events_.other = true; }
+
+void InputCollector::onIconify(GLFWwindow* window, int) {
+    collectorOf(window)->events_.other = true;
 }
 
 std::optional<NavAction> navActionForKey(int glfwKey) {

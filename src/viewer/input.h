@@ -1,7 +1,9 @@
 #pragma once
 // Keyboard and mouse events of the window, collected by GLFW callbacks between two frames and
 // handed to the frame in one piece. Key presses are queued as events (not polled), so a press and
-// release within one frame (as xdotool sends them) is never lost.
+// release within one frame (as xdotool sends them) is never lost. Every input or window event
+// (also releases, characters, cursor moves, focus, resize, expose, minimise) is noted, so the
+// window knows that a frame is wanted (redraw_schedule.h).
 
 #include "navigation.h"
 
@@ -18,6 +20,8 @@ struct InputEvents {
     std::vector<int> keys;    // GLFW key codes of presses and repeats, in order
     double scroll = 0.0;      // wheel notches, positive = away from the user
     bool leftPressed = false; // the left button went down
+    bool keyboard = false;    // a key event (press, repeat, release) or a character arrived
+    bool other = false;       // a mouse, cursor or window event arrived
 };
 
 class InputCollector {
@@ -28,11 +32,20 @@ public:
     void attach(GLFWwindow* window);
     // The events since the last call.
     InputEvents take();
+    // The events since the last take(), left in place.
+    const InputEvents& pending() const { return events_; }
 
 private:
     static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void onScroll(GLFWwindow* window, double dx, double dy);
     static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+    static void onChar(GLFWwindow* window, unsigned int codepoint);
+    static void onCursor(GLFWwindow* window, double x, double y);
+    static void onEnter(GLFWwindow* window, int entered);
+    static void onFocus(GLFWwindow* window, int focused);
+    static void onSize(GLFWwindow* window, int width, int height);
+    static void onRefresh(GLFWwindow* window);
+    static void onIconify(GLFWwindow* window, int iconified);
     InputEvents events_;
 };
 

@@ -27,6 +27,8 @@ public:
     // frame are forwarded now, outside any ImGui frame (ImGui asserts that modifiers do not change
     // within one).
     void frameEnded();
+    // Whether events are held back for later frames (each later frame delivers some).
+    bool holding() const { return gate_.waiting() > 0; }
 
 private:
     using KeyFunction = void (*)(GLFWwindow*, int, int, int, int);

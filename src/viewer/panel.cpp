@@ -145,9 +145,12 @@ void statisticsSection(const PanelView& view) {
     if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         return;
     }
+    // Frames are drawn only when something changed, so the rate is that of the redraws.
     const float frameMs = view.frameMs ? view.frameMs->mean() : 0.0f;
-    ImGui::Text("window %.1f ms/frame, %.0f fps; upload %.2f ms", static_cast<double>(frameMs),
-                frameMs > 0.0f ? 1000.0 / static_cast<double>(frameMs) : 0.0, view.uploadMs);
+    const float drawMs = view.drawMs ? view.drawMs->mean() : 0.0f;
+    ImGui::Text("window %.0f redraws/s, %.1f ms each; upload %.2f ms",
+                frameMs > 0.0f ? 1000.0 / static_cast<double>(frameMs) : 0.0,
+                static_cast<double>(drawMs), view.uploadMs);
     if (view.shown != nullptr && view.shown->image.width > 0) {
         const ShownImage& s = *view.shown;
         ImGui::Text("%d x %d, %d samples%s, %zu triangles", s.image.width, s.image.height,
@@ -160,10 +163,10 @@ void statisticsSection(const PanelView& view) {
         ImGui::PlotLines("##pass", view.passMs->data(), view.passMs->size(), view.passMs->offset(),
                          "pass ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
     }
-    if (view.frameMs != nullptr) {
+    if (view.drawMs != nullptr) {
         ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-        ImGui::PlotLines("##frame", view.frameMs->data(), view.frameMs->size(),
-                         view.frameMs->offset(), "frame ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
+        ImGui::PlotLines("##draw", view.drawMs->data(), view.drawMs->size(), view.drawMs->offset(),
+                         "draw ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
         ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
         ImGui::TextUnformatted("times");
     }

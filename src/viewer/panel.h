@@ -34,7 +34,8 @@ struct PanelView {
     bool loading = false;             // a scene is being loaded in the background
     float step = 0.1f;                // navigationStep of the scene: drag speeds
     float maxEpsilon = 0.1f;          // the right end of the epsilon slider
-    const History* frameMs = nullptr; // UI frame times
+    const History* frameMs = nullptr; // intervals between frames drawn (ms)
+    const History* drawMs = nullptr;  // the UI thread's time to draw a frame (ms)
     const History* passMs = nullptr;  // render pass times
     double uploadMs = 0.0;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #ifdef __linux__
@@ -95,8 +96,9 @@ bool sameJob(const RenderJob& a, const RenderJob& b) {
            a.settings.exposure == b.settings.exposure;
 }
 
-RenderWorker::RenderWorker(double previewBudgetSeconds)
-    : previewBudgetSeconds_(previewBudgetSeconds), thread_([this] { run(); }) {}
+RenderWorker::RenderWorker(double previewBudgetSeconds, std::function<void()> onPicture)
+    : previewBudgetSeconds_(previewBudgetSeconds), onPicture_(std::move(onPicture)),
+      thread_([this] { run(); }) {}
 
 RenderWorker::~RenderWorker() {
     {
@@ -151,9 +153,14 @@ void RenderWorker::run() {
     ShownImage staging;
 
     const auto publish = [&](ShownImage& picture) {
-        std::lock_guard lock(mutex_);
-        picture.serial = ++published;
-        std::swap(latest_, picture);
+        {
+            std::lock_guard lock(mutex_);
+            picture.serial = ++published;
+            std::swap(latest_, picture);
+        }
+        if (onPicture_) {
+            onPicture_();
+        }
     };
     const auto setInPreview = [&](bool running) {
         std::lock_guard lock(mutex_);
@@ -238,9 +245,14 @@ void RenderWorker::run() {
 
         double seconds = 0.0;
         RayCounts counts;
+        bool displayed = false; // staging.image already shows the sums
         if (samples < static_cast<uint32_t>(settings.samplesPerPixel)) {
+            // The pass writes the display bytes tile by tile, on the tracing threads.
+            staging.image.pixels.resize(4 * pixelCount(settings));
+            PassOptions full = pass;
+            full.displayRgba = staging.image.pixels;
             const auto start = Clock::now();
-            if (!accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, pass)) {
+            if (!accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, full)) {
                 sums.clear(); // partly updated: worthless, whatever the next job is
                 tally(&PassTotals::passes, -1.0);
                 continue;
@@ -249,13 +261,16 @@ void RenderWorker::run() {
             tally(&PassTotals::passes, seconds);
             secondsPerPixel = seconds / static_cast<double>(pixelCount(settings));
             ++samples;
+            displayed = true;
         }
         // A new pass, or a new job that keeps the samples (display, cap, threads): show it.
         staging.image.width = settings.width;
         staging.image.height = settings.height;
-        staging.image.pixels.resize(4 * pixelCount(settings));
-        toRgba8(sums, 1.0f / static_cast<float>(samples), settings.display, settings.exposure,
-                staging.image.pixels);
+        if (!displayed) {
+            staging.image.pixels.resize(4 * pixelCount(settings));
+            toRgba8(sums, 1.0f / static_cast<float>(samples), settings.display, settings.exposure,
+                    staging.image.pixels);
+        }
         if (job.keepLinear) {
             // The same arithmetic as core's render(): sum * (1 / n).
             const float scale = 1.0f / static_cast<float>(samples);

@@ -20,6 +20,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -40,11 +41,17 @@ bool samePicture(const RenderJob& a, const RenderJob& b);
 // True when every field of the two jobs is equal (keepLinear aside).
 bool sameJob(const RenderJob& a, const RenderJob& b);
 
+// The UI frame budget under which a full pass needs no preview first: two frames at 60 Hz.
+inline constexpr double kPreviewBudgetSeconds = 1.0 / 30.0;
+
 class RenderWorker {
 public:
     // previewBudgetSeconds: a restart renders a preview first when a full pass is expected to
-    // take longer than this.
-    explicit RenderWorker(double previewBudgetSeconds = 1.0 / 30.0);
+    // take longer than this. onPicture, when set, is called on the render thread after each
+    // picture is published (outside the worker's lock), so a waiting UI can wake up; it must be
+    // thread-safe and quick (e.g. glfwPostEmptyEvent).
+    explicit RenderWorker(double previewBudgetSeconds = kPreviewBudgetSeconds,
+                          std::function<void()> onPicture = {});
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
     // Cancels the pass in flight and joins the thread.
@@ -65,6 +72,7 @@ private:
     void run();
 
     const double previewBudgetSeconds_;
+    const std::function<void()> onPicture_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     RenderJob job_;          // guarded by mutex_

@@ -24,17 +24,24 @@ void Tally::add(double value) {
 }
 
 std::string runStatsJson(const RunStats& stats) {
-    const double fps = stats.shownSeconds > 0.0 && stats.framesShown > 1
-                           ? static_cast<double>(stats.framesShown - 1) / stats.shownSeconds
-                           : 0.0;
+    const auto perSecond = [&stats](uint64_t count) {
+        return stats.shownSeconds > 0.0 ? static_cast<double>(count) / stats.shownSeconds : 0.0;
+    };
+    // Frames: the first swap starts the clock, so the rate counts the intervals after it.
+    const double fps = stats.framesShown > 1 ? perSecond(stats.framesShown - 1) : 0.0;
     nlohmann::ordered_json json = {
+        {"redraw", stats.continuous ? "continuous" : "on demand"},
         {"frames_shown", stats.framesShown},
         {"seconds", stats.shownSeconds},
         {"window_fps", fps},
+        {"pictures_shown", stats.uploads.count},
+        {"pictures_per_second", perSecond(stats.uploads.count)},
         {"frame_ms",
-         {{"mean", stats.frameIntervals.mean() * 1000.0},
-          {"max", stats.frameIntervals.max * 1000.0}}},
+         {{"mean", stats.frameResponses.mean() * 1000.0},
+          {"max", stats.frameResponses.max * 1000.0}}},
         {"frames_over_33ms", stats.slowFrames},
+        {"draw_ms",
+         {{"mean", stats.drawTimes.mean() * 1000.0}, {"max", stats.drawTimes.max * 1000.0}}},
         {"minimised_seconds", stats.minimisedSeconds},
         {"upload_ms",
          {{"count", stats.uploads.count},

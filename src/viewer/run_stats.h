@@ -26,12 +26,16 @@ struct PassTotals {
 };
 
 struct RunStats {
-    uint64_t framesShown = 0;      // buffer swaps
+    bool continuous = false;       // every frame slot drawn (scripted runs); else only when wanted
+    uint64_t framesShown = 0;      // frames drawn (buffer swaps)
     double shownSeconds = 0.0;     // from the first swap to the last, minimised time excluded
     double minimisedSeconds = 0.0; // wall clock spent minimised (nothing drawn)
-    Tally frameIntervals;          // swap to swap, minimised time excluded
-    uint64_t slowFrames = 0;       // intervals longer than 1/30 s
-    Tally uploads;                 // texture uploads of new pictures (CPU side)
+    // Per frame after the first: from when the frame was wanted (a new picture, an event, or,
+    // drawing continuously, the previous swap) to its swap (redraw_schedule.h).
+    Tally frameResponses;
+    uint64_t slowFrames = 0; // frame responses longer than 1/30 s
+    Tally drawTimes;         // the UI thread's time per frame, from its start to after the swap
+    Tally uploads;           // texture uploads, one per new picture shown (CPU side)
     PassTotals tracer;
     // The last picture shown: its render resolution and samples per pixel (0 for a preview).
     int width = 0;
@@ -41,10 +45,12 @@ struct RunStats {
     uint64_t triangles = 0;
 };
 
-// The JSON text --stats writes: frames_shown, seconds, window_fps, frame_ms {mean, max},
-// frames_over_33ms, minimised_seconds, upload_ms {count, mean, max}, passes, pass_ms {mean, min,
-// max}, previews, preview_ms {mean, min, max}, cancelled_passes, samples, render_width,
-// render_height, scene, triangles. Times in milliseconds unless named seconds.
+// The JSON text --stats writes: redraw ("on demand" or "continuous"), frames_shown, seconds,
+// window_fps (frames drawn per second), pictures_shown (new pictures of the tracer drawn),
+// pictures_per_second, frame_ms {mean, max} (frame responses), frames_over_33ms, draw_ms {mean,
+// max}, minimised_seconds, upload_ms {count, mean, max}, passes, pass_ms {mean, min, max},
+// previews, preview_ms {mean, min, max}, cancelled_passes, samples, render_width, render_height,
+// scene, triangles. Times in milliseconds unless named seconds.
 std::string runStatsJson(const RunStats& stats);
 
 // Writes runStatsJson to `path` atomically; false with a one-line error.

@@ -20,9 +20,14 @@ bool SceneLoader::start(const std::string& source) {
     result_.reset();
     thread_ = std::thread([this, source] {
         SceneLoadResult result = loadSceneForViewer(source);
-        std::lock_guard done(mutex_);
-        result_ = std::move(result);
-        running_ = false;
+        {
+            std::lock_guard done(mutex_);
+            result_ = std::move(result);
+            running_ = false;
+        }
+        if (onDone_) {
+            onDone_();
+        }
     });
     return true;
 }

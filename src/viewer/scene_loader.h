@@ -4,16 +4,20 @@
 
 #include "loaded_scene.h"
 
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 
 namespace raylab::viewer {
 
 class SceneLoader {
 public:
-    SceneLoader() = default;
+    // onDone, when set, is called on the loading thread once a result is ready to poll (so a
+    // waiting UI can wake up); it must be thread-safe and quick.
+    explicit SceneLoader(std::function<void()> onDone = {}) : onDone_(std::move(onDone)) {}
     SceneLoader(const SceneLoader&) = delete;
     SceneLoader& operator=(const SceneLoader&) = delete;
     // Waits for a load in progress (a mesh load cannot be interrupted).
@@ -26,6 +30,7 @@ public:
     std::optional<SceneLoadResult> poll();
 
 private:
+    const std::function<void()> onDone_;
     mutable std::mutex mutex_;
     std::thread thread_;
     bool running_ = false;

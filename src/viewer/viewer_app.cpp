@@ -18,6 +18,7 @@
 #include "key_relay.h"
 #include "panel.h"
 #include "panel_context.h"
+#include "redraw_schedule.h"
 #include "render_worker.h"
 #include "run_stats.h"
 #include "scene_loader.h"
@@ -31,6 +32,20 @@ namespace raylab::viewer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point from, Clock::time_point to) {
+    return std::chrono::duration<double>(to - from).count();
+}
+
+// Sleeps until `until`, or less when an event arrives (input, a window event, or an empty event
+// posted by the render thread or the scene loader), and processes the events.
+void waitForEvents(Clock::time_point until) {
+    const auto now = Clock::now();
+    if (until > now) {
+        glfwWaitEventsTimeout(secondsBetween(now, until));
+    }
+    glfwPollEvents();
+}
 
 bool isLabBox(const LoadedScene& scene) { return scene.source == "cornell"; }
 
@@ -98,8 +113,10 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         return 1;
     }
     KeyRelay keys(window.handle()); // in front of ImGui's key callbacks
-    SceneLoader loader;
-    RenderWorker worker; // declared last: stopped and joined first
+    // Both wake the UI thread when they have something to show (glfwPostEmptyEvent is
+    // thread-safe); both are joined before the window closes.
+    SceneLoader loader([] { glfwPostEmptyEvent(); });
+    RenderWorker worker(kPreviewBudgetSeconds, [] { glfwPostEmptyEvent(); }); // last: joined first
 
     PanelState panel;
     panel.settings = command.settings;
@@ -113,7 +130,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     ShownImage shown;
     RenderJob submitted;
     uint64_t submittedSerial = 0;
-    History frameMs(120), passMs(120);
+    History frameMs(120), drawMs(120), passMs(120);
     int framesShown = 0;
     int screenshots = 0;
     bool quit = false;
@@ -123,22 +140,39 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     const bool keepLinear = !command.screenshot.empty() &&
                             std::filesystem::path(command.screenshot).extension() != ".png";
     const bool needsFinal = !command.screenshot.empty() || !options.readback.empty();
-    const auto framePeriod = std::chrono::duration<double>(1.0 / kFramesPerSecond);
+    // Scripted runs draw every frame (N frames take N / 60 s); interactive ones only when wanted.
+    RedrawSchedule schedule(kFramesPerSecond, scripted);
     auto previousFrameTime = Clock::now();
-    auto nextFrame = previousFrameTime;
+    schedule.want(previousFrameTime);
     RunStats stats;
+    stats.continuous = scripted;
     bool wasMinimised = false;
     auto minimisedSince = previousFrameTime;
+    bool pictureToUpload = false;        // shown holds a picture not uploaded yet
+    int drawnWidth = 0, drawnHeight = 0; // the framebuffer's size at the last frame
 
     for (;;) {
-        // Pace the loop; events (collected by the callbacks) wake it early, but frames stay paced.
-        for (auto now = Clock::now(); now < nextFrame; now = Clock::now()) {
-            glfwWaitEventsTimeout(std::chrono::duration<double>(nextFrame - now).count());
-        }
-        glfwPollEvents();
-        nextFrame = std::max(nextFrame + std::chrono::duration_cast<Clock::duration>(framePeriod),
-                             Clock::now());
+        // Minimised, nothing is drawn, so frames wanted meanwhile must not end the wait.
+        const auto idleUntil = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(kIdleWakeSeconds));
+        waitForEvents(wasMinimised ? idleUntil : std::min(schedule.wakeAt(), idleUntil));
+        const auto wokeAt = Clock::now();
         quit = quit || glfwWindowShouldClose(window.handle()) != 0;
+        if (worker.takeLatest(shown)) {
+            pictureToUpload = true;
+            schedule.want(wokeAt);
+        }
+        if (input.pending().other) {
+            schedule.want(wokeAt, kFramesAfterEvent);
+        }
+        if (input.pending().keyboard) {
+            // Keys that navigate need only the frame that applies them (the picture they
+            // change wakes the window again); keys for the panel get ImGui's frames.
+            schedule.want(wokeAt, ImGui::GetIO().WantCaptureKeyboard ? kFramesAfterEvent : 1);
+        }
+        if (keys.holding() || quit) {
+            schedule.want(wokeAt);
+        }
 
         if (auto loaded = loader.poll()) {
             if (loaded->scene) {
@@ -154,6 +188,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             } else {
                 setStatus(panel, loaded->error, true);
             }
+            schedule.want(wokeAt);
         }
 
         int fbWidth = 0, fbHeight = 0;
@@ -167,6 +202,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 stats.minimisedSeconds +=
                     std::chrono::duration<double>(now - minimisedSince).count();
                 previousFrameTime = now; // the next interval starts now, not before minimising
+                schedule.resume(now);
             }
             wasMinimised = minimised;
         }
@@ -176,14 +212,22 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             }
             continue; // nothing to draw; the tracer keeps its job and stops at the sample cap
         }
+        if (fbWidth != drawnWidth || fbHeight != drawnHeight) {
+            schedule.want(wokeAt);
+        }
+        if (!schedule.due(wokeAt)) {
+            continue;
+        }
+        schedule.frameStarted(wokeAt);
 
         gui.beginFrame();
-        if (worker.takeLatest(shown)) {
+        if (pictureToUpload) {
             quad.upload(shown.image);
             stats.uploads.add(quad.lastUploadSeconds());
             if (shown.passSeconds > 0.0) {
                 passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
             }
+            pictureToUpload = false;
         }
         applyInput(input.take(), window.handle(), step, fbHeight, drag, panel, showPanel,
                    screenshots, quit);
@@ -196,6 +240,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             view.step = step;
             view.maxEpsilon = maxEpsilon;
             view.frameMs = &frameMs;
+            view.drawMs = &drawMs;
             view.passMs = &passMs;
             view.uploadMs = quad.lastUploadSeconds() * 1000.0;
             const PanelActions actions = drawPanel(panel, view);
@@ -226,9 +271,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                                 (!needsFinal || (current && shown.final));
         const bool finalFrame = quit || scriptEnds;
 
-        glViewport(0, 0, fbWidth, fbHeight);
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+        if (!quad.hasImage()) { // the picture, when there is one, covers every pixel
+            glViewport(0, 0, fbWidth, fbHeight);
+            glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
         quad.draw(fbWidth, fbHeight);
         if (screenshots > 0 && current) {
             std::string path;
@@ -249,17 +296,31 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         glfwSwapBuffers(window.handle());
         ++framesShown;
+        drawnWidth = fbWidth;
+        drawnHeight = fbHeight;
         const auto now = Clock::now();
-        const double interval = std::chrono::duration<double>(now - previousFrameTime).count();
+        const double interval = secondsBetween(previousFrameTime, now);
+        const double response = schedule.frameShown(now);
         frameMs.push(static_cast<float>(interval * 1000.0));
+        drawMs.push(static_cast<float>(secondsBetween(wokeAt, now) * 1000.0));
+        stats.drawTimes.add(secondsBetween(wokeAt, now));
         previousFrameTime = now;
         if (stats.framesShown++ > 0) { // the first swap starts the clock
-            stats.frameIntervals.add(interval);
+            stats.frameResponses.add(response);
             stats.shownSeconds += interval;
-            stats.slowFrames += interval > 1.0 / 30.0 ? 1 : 0;
+            stats.slowFrames += response > 1.0 / 30.0 ? 1 : 0;
         }
         if (finalFrame) {
             break;
+        }
+        // What Dear ImGui needs next: a held button (a drag, a slider) follows the cursor every
+        // frame; an active text field blinks its cursor.
+        if (ImGui::IsAnyMouseDown()) {
+            schedule.want(now);
+        }
+        if (ImGui::GetIO().WantTextInput) {
+            schedule.wantAt(now + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(kTextCursorSeconds)));
         }
     }
 

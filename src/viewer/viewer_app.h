@@ -2,8 +2,12 @@
 // The viewer's main loop on the UI thread: events, panel, input, render jobs for the render
 // thread, the newest picture uploaded and drawn, screenshots, and the scripted end.
 //
-// The UI redraws at most kFramesPerSecond times a second (and at least that often while a pass
-// runs, since the tracer works on its own thread); while minimised it draws nothing.
+// The UI draws a frame only when one is wanted (redraw_schedule.h): a new picture of the tracer
+// (the render thread wakes the UI thread), an input or window event and the kFramesAfterEvent
+// frames after it that Dear ImGui needs, a held mouse button, a blinking text cursor, a resize,
+// a loaded scene. Frames are paced to at most kFramesPerSecond; an idle window draws nothing, so
+// the tracer gets the CPU that a software GL driver would spend redrawing identical frames.
+// While minimised it draws nothing. Scripted runs (--frames) draw every frame at the paced rate.
 //
 // Scripted end (--frames N): the viewer quits after N shown frames. With --screenshot FILE or
 // --readback FILE it keeps going after N until the picture on screen is final (the sample cap
@@ -19,6 +23,15 @@
 namespace raylab::viewer {
 
 inline constexpr double kFramesPerSecond = 60.0;
+// Frames drawn after an input or window event (after a key only when the panel has the
+// keyboard; otherwise one): Dear ImGui shows some of its effects (hover, activation, a panel's
+// new size) one or two frames late.
+inline constexpr int kFramesAfterEvent = 3;
+// While a text field is active, its cursor blinks: a frame at least this often (seconds).
+inline constexpr double kTextCursorSeconds = 0.1;
+// With nothing wanted, the UI thread still wakes this often (seconds) to look around; it draws
+// nothing then.
+inline constexpr double kIdleWakeSeconds = 0.5;
 
 // Opens the window and runs until it closes, Escape, or the script ends. `settings` in options
 // must be valid and already placed for the scene. Returns the process exit code (0, or 1 when the

@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_scene_path import test_scene_path  # noqa: E402
-from e2e_stats import test_stats  # noqa: E402
+from e2e_stats import test_idle, test_stats  # noqa: E402
 from e2e_support import (PANEL_BUTTON, Env, Failure, Viewer, check, close,  # noqa: E402
                          distinct_colours, same_pixels, vec)
 
@@ -253,6 +253,7 @@ TESTS = {
     "minimise": (test_minimise, True),
     "scene_path": (test_scene_path, True),
     "stats": (test_stats, True),
+    "idle": (test_idle, True),
 }
 
 

@@ -11,6 +11,7 @@
 #include "screenshot.h"
 #include "settings_edit.h"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -68,6 +69,21 @@ TEST(ViewerRenderWorker, FinalPictureEqualsCoreRender) {
     EXPECT_EQ(shown.image.width, 64);
     EXPECT_EQ(shown.image.height, 48);
     EXPECT_EQ(shown.image.pixels, reference(*box, settings));
+}
+
+TEST(ViewerRenderWorker, WakesTheUiForEveryPicture) {
+    const auto box = labBox();
+    std::atomic<int> wakes{0};
+    RenderWorker worker(kPreviewBudgetSeconds, [&wakes] { ++wakes; });
+    const ShownImage shown = waitFinal(worker, worker.submit({box, smallSettings(3)}));
+    // One picture per pass, each published before its wake-up: the final (third) one has woken
+    // the UI by the time the worker is idle.
+    EXPECT_EQ(shown.serial, 3u);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (wakes.load() < 3 && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_EQ(wakes.load(), 3);
 }
 
 TEST(ViewerRenderWorker, ChangeRestartsAndDisplayOnlyRemaps) {
