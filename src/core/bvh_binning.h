@@ -6,21 +6,43 @@
 
 #include <cstdint>
 #include <emmintrin.h>
+#include <memory>
+#include <new>
+#include <utility>
+#include <vector>
 
 namespace raylab {
 
 inline constexpr int kMaxBins = 32;
 
 // A triangle as the builder moves it around: its bounds and its scene index. 32 bytes, two
-// 128-bit loads (the fourth lanes hold the index bits and 0 and are ignored).
+// 128-bit loads (the fourth lanes hold the index bits and the padding, and are ignored).
 struct PrimRecord {
     glm::vec3 lower;
     uint32_t sceneIndex;
     glm::vec3 upper;
-    float pad = 0.0f;
+    float pad;                                           // never read
     glm::vec3 centroid() const { return lower + upper; } // twice the centre: only compared
 };
 static_assert(sizeof(PrimRecord) == 32);
+
+// An allocator whose resize() leaves new elements default-initialised (for PrimRecord: not
+// written), since the build writes every record it makes room for.
+template <typename T> struct UninitialisedAllocator : std::allocator<T> {
+    template <typename U> struct rebind { using other = UninitialisedAllocator<U>; };
+    UninitialisedAllocator() = default;
+    template <typename U> UninitialisedAllocator(const UninitialisedAllocator<U>&) {}
+    template <typename U, typename... Args> void construct(U* p, Args&&... args) {
+        if constexpr (sizeof...(Args) == 0) {
+            ::new (static_cast<void*>(p)) U;
+        } else {
+            ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+        }
+    }
+};
+
+// The build's arrays of references.
+using RecordVector = std::vector<PrimRecord, UninitialisedAllocator<PrimRecord>>;
 
 struct SseBox {
     __m128 lower = _mm_set1_ps(kInfinity);
@@ -37,23 +59,52 @@ struct SseBox {
     }
 };
 
-// Bounds of the boxes and of the centroids of records [first, last).
-inline void boundsOf(const PrimRecord* first, const PrimRecord* last, Aabb& bounds,
-                     Aabb& centroids) {
+// The bounds of some records' boxes and of their centroids, as the build carries them from a
+// node to its children. min and max are exact, so the result does not depend on the order the
+// records are added in (up to the sign of zero: merge in a fixed order).
+struct RecordBounds {
     SseBox box, centres;
-    for (const PrimRecord* r = first; r != last; ++r) {
-        const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
+    void add(__m128 lo, __m128 hi) {
         box.extend(lo, hi);
         const __m128 c = _mm_add_ps(lo, hi);
         centres.extend(c, c);
     }
-    bounds = box.toAabb();
-    centroids = centres.toAabb();
+    void add(const PrimRecord& r) { add(_mm_loadu_ps(&r.lower.x), _mm_loadu_ps(&r.upper.x)); }
+    void merge(const RecordBounds& o) {
+        box.extend(o.box.lower, o.box.upper);
+        centres.extend(o.centres.lower, o.centres.upper);
+    }
+};
+
+// Bounds of the boxes and of the centroids of records [first, last).
+inline RecordBounds boundsOf(const PrimRecord* first, const PrimRecord* last) {
+    RecordBounds b;
+    for (const PrimRecord* r = first; r != last; ++r) {
+        b.add(*r);
+    }
+    return b;
 }
 
+// SAH bins of the three axes. Only the first `bins` of each axis are used; reset() empties them.
 struct BinSet {
     SseBox box[3][kMaxBins];
     uint32_t count[3][kMaxBins] = {};
+    void reset(int bins) {
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < bins; ++b) {
+                box[a][b] = SseBox{};
+                count[a][b] = 0;
+            }
+        }
+    }
+    void merge(const BinSet& o, int bins) {
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < bins; ++b) {
+                box[a][b].extend(o.box[a][b].lower, o.box[a][b].upper);
+                count[a][b] += o.count[a][b];
+            }
+        }
+    }
 };
 
 // Bin of a centroid coordinate c: floor((c - lower) * scale), clamped to [0, bins - 1]; the same
@@ -65,18 +116,40 @@ inline int binOf(float c, float lower, float scale, int bins) {
     return static_cast<int>(x);
 }
 
-// Bins records [first, last) on all three axes at once.
+// Bins records [first, last) on all three axes at once, adding to what `out` holds. Records
+// go two at a time, and two in the same bin update it once: neighbours often share a bin, and
+// each update waits for the previous one of its bin.
 inline void binRecords(const PrimRecord* first, const PrimRecord* last, const glm::vec3& lower,
                        const glm::vec3& scale, int bins, BinSet& out) {
     const __m128 lo4 = _mm_setr_ps(lower.x, lower.y, lower.z, 0.0f);
     const __m128 scale4 = _mm_setr_ps(scale.x, scale.y, scale.z, 0.0f);
     const __m128 top = _mm_set1_ps(static_cast<float>(bins - 1));
-    alignas(16) int32_t b[4];
-    for (const PrimRecord* r = first; r != last; ++r) {
+    auto binOf4 = [&](__m128 lo, __m128 hi) {
+        const __m128 x = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(lo, hi), lo4), scale4);
+        return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), top));
+    };
+    alignas(16) int32_t b[4], c[4];
+    const PrimRecord* r = first;
+    for (; last - r >= 2; r += 2) {
+        const __m128 lo = _mm_loadu_ps(&r[0].lower.x), hi = _mm_loadu_ps(&r[0].upper.x);
+        const __m128 lo1 = _mm_loadu_ps(&r[1].lower.x), hi1 = _mm_loadu_ps(&r[1].upper.x);
+        _mm_store_si128(reinterpret_cast<__m128i*>(b), binOf4(lo, hi));
+        _mm_store_si128(reinterpret_cast<__m128i*>(c), binOf4(lo1, hi1));
+        for (int a = 0; a < 3; ++a) {
+            if (b[a] == c[a]) {
+                out.box[a][b[a]].extend(_mm_min_ps(lo, lo1), _mm_max_ps(hi, hi1));
+                out.count[a][b[a]] += 2;
+            } else {
+                out.box[a][b[a]].extend(lo, hi);
+                ++out.count[a][b[a]];
+                out.box[a][c[a]].extend(lo1, hi1);
+                ++out.count[a][c[a]];
+            }
+        }
+    }
+    if (r != last) {
         const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
-        __m128 x = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(lo, hi), lo4), scale4);
-        x = _mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), top);
-        _mm_store_si128(reinterpret_cast<__m128i*>(b), _mm_cvttps_epi32(x));
+        _mm_store_si128(reinterpret_cast<__m128i*>(b), binOf4(lo, hi));
         for (int a = 0; a < 3; ++a) {
             out.box[a][b[a]].extend(lo, hi);
             ++out.count[a][b[a]];

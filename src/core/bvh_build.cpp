@@ -1,388 +1,267 @@
 // Binned SAH build of the binary BVH (bvh.h).
 //
-// Every valid triangle becomes a primitive record (its box and scene index). Nodes are split by
-// the surface area heuristic evaluated at the borders of 16 bins over the centroids' extent on
-// each axis (object splits), or, where the children of the best object split overlap, by a plane
-// that cuts the triangles crossing it (spatial splits, bvh_spatial_split.h), within a budget of
-// extra references. Each task owns its references; a last pass orders the leaves' references
-// so that every subtree's are contiguous. The top of the tree is built on the calling
-// thread until subtrees are small (a size threshold that depends only on the triangle count);
-// those subtrees are then built in parallel into their own node arrays and appended in a fixed
-// order, so the result is the same whatever the thread count.
+// Every valid triangle becomes a primitive record (its box and scene index); pre-splitting may
+// add references (bvh_presplit.h). Nodes are split as bvh_build_subtree.h describes. The top of
+// the tree, down to subtrees of a size that depends only on the triangle count, is built one
+// node at a time with every thread binning and partitioning its own chunks of the node's
+// references; those subtrees are then built in parallel, each into its own arrays with its
+// leaves in depth-first order, and assembled in a fixed order, so the result is the same
+// whatever the thread count.
 
 #include "bvh.h"
 #include "bvh_binning.h"
+#include "bvh_build_subtree.h"
+#include "bvh_build_team.h"
 #include "bvh_collapse.h"
 #include "bvh_presplit.h"
-#include "bvh_spatial_split.h"
 #include "parallel_tiles.h"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <cmath>
-#include <thread>
+#include <deque>
+#include <numeric>
 #include <vector>
 
 namespace raylab {
 
 namespace {
 
-constexpr int kMaxLeafSize = 64;       // cap on BvhBuildOptions::maxLeafSize
-constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the median (depth bound)
-constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
-constexpr std::size_t kMinTaskSize = 4096; // smallest subtree worth a parallel task
+constexpr std::size_t kMinTaskSize = 4096;  // smallest subtree worth a parallel task
+constexpr std::size_t kBoundsChunk = 65536; // records per chunk of the root's bounds
 
-// The references of a subtree waiting to become the node at nodes[slot].
-struct BuildTask {
-    uint32_t slot = 0;
-    std::vector<PrimRecord> records;
-    int depth = 0;
-    uint32_t splitBudget = 0; // extra references its spatial splits may still make
-};
-
-// What the build needs besides the references.
-struct BuildContext {
-    const Scene* scene = nullptr;
-    float slack = 0.0f;          // splitBox's (bvh_clip.h)
-    float minOverlapArea = 0.0f; // spatial splits only where object splits overlap more
-    float minNodeOverlap = 0.0f; // ... and more than this fraction of the node's own surface
-};
-
-// A built subtree: nodes[0] is its root; leaf node i holds records [index, index + count).
-struct Subtree {
-    std::vector<BvhNode> nodes;
-    std::vector<PrimRecord> records;
-};
-
-// Builds subtrees. Children of a split are appended as a pair.
-class Builder {
-public:
-    Builder(const BvhBuildOptions& options, const BuildContext& context)
-        : maxLeaf_(std::clamp(options.maxLeafSize, 1, kMaxLeafSize)),
-          bins_(std::clamp(options.binCount, 2, kMaxBins)), context_(context) {}
-
-    // Builds the subtree of `root` into out (root at out.nodes[root.slot]); stops descending
-    // (and records the task in `deferred` instead) at nodes with no more than `deferBelow`
-    // references, when that is > 0.
-    void build(Subtree& out, BuildTask root, std::size_t deferBelow,
-               std::vector<BuildTask>* deferred) const {
-        std::vector<BuildTask> stack;
-        stack.push_back(std::move(root));
-        std::vector<PrimRecord> left, right;
-        while (!stack.empty()) {
-            BuildTask task = std::move(stack.back());
-            stack.pop_back();
-            const std::size_t count = task.records.size();
-            if (deferred && count <= deferBelow && count > static_cast<std::size_t>(maxLeaf_)) {
-                deferred->push_back(std::move(task));
+// One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
+// largest |coordinate| of a valid vertex.
+RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipped,
+                         float& magnitude) {
+    const std::size_t triangles = scene.triangles.size();
+    const std::size_t chunks = (triangles + kBoundsChunk - 1) / kBoundsChunk;
+    std::vector<RecordVector> parts(chunks);
+    std::vector<float> largest(chunks, 0.0f);
+    team.forEach(chunks, [&](std::size_t c) {
+        parts[c].reserve(kBoundsChunk);
+        for (std::size_t i = c * kBoundsChunk; i < std::min(triangles, (c + 1) * kBoundsChunk);
+             ++i) {
+            const Triangle& t = scene.triangles[i];
+            if (!isValidTriangle(t)) {
                 continue;
             }
-            Aabb bounds, centroids;
-            boundsOf(task.records.data(), task.records.data() + count, bounds, centroids);
-            BvhNode& node = out.nodes[task.slot];
-            node.lower = bounds.lower;
-            node.upper = bounds.upper;
-            if (!chooseSplit(task, bounds, centroids, left, right)) { // leaf
-                node.index = static_cast<uint32_t>(out.records.size());
-                node.count = static_cast<uint32_t>(count);
-                out.records.insert(out.records.end(), task.records.begin(), task.records.end());
-                continue;
-            }
-            const auto first = static_cast<uint32_t>(out.nodes.size());
-            out.nodes.resize(out.nodes.size() + 2);
-            out.nodes[task.slot].index = first; // `node` may dangle after the resize
-            out.nodes[task.slot].count = 0;
-            // The budget left after this split goes to the children by their sizes.
-            const std::size_t made = left.size() + right.size() - count;
-            const uint64_t budget = task.splitBudget - std::min<uint64_t>(task.splitBudget, made);
-            const auto leftBudget =
-                static_cast<uint32_t>(budget * left.size() / (left.size() + right.size()));
-            // Right first on the stack, so the left child's subtree follows it in memory.
-            stack.push_back({first + 1, std::move(right), task.depth + 1,
-                             static_cast<uint32_t>(budget) - leftBudget});
-            stack.push_back({first, std::move(left), task.depth + 1, leftBudget});
-            left = {};
-            right = {};
+            const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
+            const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
+            largest[c] =
+                std::max({largest[c], glm::abs(lower).x, glm::abs(lower).y, glm::abs(lower).z,
+                          glm::abs(upper).x, glm::abs(upper).y, glm::abs(upper).z});
+            parts[c].push_back({lower, static_cast<uint32_t>(i), upper, 0.0f});
         }
+    });
+    std::vector<std::size_t> at(chunks + 1, 0);
+    for (std::size_t c = 0; c < chunks; ++c) {
+        at[c + 1] = at[c] + parts[c].size();
+        magnitude = std::max(magnitude, largest[c]);
     }
-
-private:
-    // The best object split (binned SAH over centroids) of a task.
-    struct ObjectSplit {
-        int axis = -1;
-        int bin = 0;
-        float cost = kInfinity;
-        float overlapArea = 0.0f; // surface of the intersection of the children's boxes
-        glm::vec3 scale{0.0f};
-    };
-
-    // Splits the task's references into left and right, or returns false for a leaf.
-    bool chooseSplit(BuildTask& task, const Aabb& bounds, const Aabb& centroids,
-                     std::vector<PrimRecord>& left, std::vector<PrimRecord>& right) const {
-        std::vector<PrimRecord>& records = task.records;
-        const auto count = static_cast<uint32_t>(records.size());
-        const glm::vec3 extent = centroids.upper - centroids.lower;
-        const bool mustSplit = count > static_cast<uint32_t>(maxLeaf_);
-        if (count <= 1) {
-            return false;
-        }
-        const bool flat = !(extent.x > 0.0f) && !(extent.y > 0.0f) && !(extent.z > 0.0f);
-        if (flat || task.depth >= kSahDepthLimit) {
-            return mustSplit && medianSplit(records, extent, left, right);
-        }
-        const ObjectSplit object = findObjectSplit(records, centroids);
-        float bestCost = object.cost;
-        SpatialSplit spatial;
-        if (task.splitBudget > 0 && context_.scene &&
-            object.overlapArea > context_.minOverlapArea &&
-            object.overlapArea > context_.minNodeOverlap * bounds.area()) {
-            spatial = findSpatialSplit(*context_.scene, records, bounds, context_.slack);
-            if (spatial.cost < bestCost && spatial.references - count <= task.splitBudget) {
-                bestCost = spatial.cost;
-            } else {
-                spatial.axis = -1;
-            }
-        }
-        if (object.axis < 0 && spatial.axis < 0) {
-            return mustSplit && medianSplit(records, extent, left, right);
-        }
-        const float area = bounds.area();
-        const float splitCost = kTraversalCost * area + bestCost;
-        const float leafCost = static_cast<float>(count) * area;
-        if (!mustSplit && leafCost <= splitCost) {
-            return false;
-        }
-        // The bins estimate the references a spatial split makes; rounding at the plane may
-        // make a few more, so the budget is checked again on the real split.
-        if (spatial.axis >= 0 &&
-            applySpatialSplit(*context_.scene, records, spatial, context_.slack, left, right) &&
-            left.size() + right.size() - count <= task.splitBudget) {
-            return true;
-        }
-        if (object.axis < 0) {
-            return mustSplit && medianSplit(records, extent, left, right);
-        }
-        const int a = object.axis;
-        const float lower = centroids.lower[a], s = object.scale[a];
-        const auto middle =
-            std::partition(records.begin(), records.end(), [&](const PrimRecord& r) {
-                return binOf(r.centroid()[a], lower, s, bins_) < object.bin;
-            });
-        left.assign(records.begin(), middle);
-        right.assign(middle, records.end());
-        return true;
-    }
-
-    ObjectSplit findObjectSplit(const std::vector<PrimRecord>& records,
-                                const Aabb& centroids) const {
-        const auto count = static_cast<uint32_t>(records.size());
-        const glm::vec3 extent = centroids.upper - centroids.lower;
-        ObjectSplit best;
-        BinSet bins;
-        for (int a = 0; a < 3; ++a) {
-            // Slightly below bins/extent so the largest centroid lands in the last bin.
-            best.scale[a] =
-                extent[a] > 0.0f ? static_cast<float>(bins_) * 0.99999f / extent[a] : 0.0f;
-        }
-        binRecords(records.data(), records.data() + count, centroids.lower, best.scale, bins_,
-                   bins);
-        // Sweep each axis: cost of splitting before bin s = A(left) N(left) + A(right) N(right).
-        for (int a = 0; a < 3; ++a) {
-            if (!(extent[a] > 0.0f)) {
-                continue;
-            }
-            std::array<float, kMaxBins> rightCost{};
-            std::array<Aabb, kMaxBins> rightBox{};
-            Aabb box;
-            uint32_t n = 0;
-            for (int s = bins_ - 1; s > 0; --s) {
-                box.extend(bins.box[a][s].toAabb());
-                n += bins.count[a][s];
-                rightCost[s] = box.area() * static_cast<float>(n);
-                rightBox[s] = box;
-            }
-            box = Aabb{};
-            n = 0;
-            for (int s = 1; s < bins_; ++s) {
-                box.extend(bins.box[a][s - 1].toAabb());
-                n += bins.count[a][s - 1];
-                const float cost = box.area() * static_cast<float>(n) + rightCost[s];
-                if (n > 0 && n < count && cost < best.cost) {
-                    best.cost = cost;
-                    best.axis = a;
-                    best.bin = s;
-                    const Aabb overlap{glm::max(box.lower, rightBox[s].lower),
-                                       glm::min(box.upper, rightBox[s].upper)};
-                    best.overlapArea = overlap.area();
-                }
-            }
-        }
-        return best;
-    }
-
-    // Splits at the median record along the axis of the largest centroid extent (or in the
-    // middle of the range when all centroids coincide). Always gives two non-empty halves.
-    bool medianSplit(std::vector<PrimRecord>& records, const glm::vec3& extent,
-                     std::vector<PrimRecord>& left, std::vector<PrimRecord>& right) const {
-        const std::size_t mid = records.size() / 2;
-        const int axis =
-            extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
-        if (extent[axis] > 0.0f) {
-            std::nth_element(records.begin(), records.begin() + static_cast<std::ptrdiff_t>(mid),
-                             records.end(), [axis](const PrimRecord& a, const PrimRecord& b) {
-                                 const float ca = a.centroid()[axis], cb = b.centroid()[axis];
-                                 return ca < cb || (ca == cb && a.sceneIndex < b.sceneIndex);
-                             });
-        }
-        left.assign(records.begin(), records.begin() + static_cast<std::ptrdiff_t>(mid));
-        right.assign(records.begin() + static_cast<std::ptrdiff_t>(mid), records.end());
-        return true;
-    }
-
-    int maxLeaf_;
-    int bins_;
-    BuildContext context_;
-};
-
-// Appends `sub` (a subtree whose root is sub.nodes[0]) to `out`: the root goes to
-// out.nodes[slot], the rest at the end, with child and leaf indices moved accordingly.
-void appendSubtree(Subtree& out, uint32_t slot, const Subtree& sub) {
-    const auto offset = static_cast<uint32_t>(out.nodes.size()) - 1; // local 1 -> nodes.size()
-    const auto recordOffset = static_cast<uint32_t>(out.records.size());
-    for (std::size_t i = 0; i < sub.nodes.size(); ++i) {
-        BvhNode node = sub.nodes[i];
-        node.index += node.isLeaf() ? recordOffset : offset;
-        if (i == 0) {
-            out.nodes[slot] = node;
-        } else {
-            out.nodes.push_back(node);
-        }
-    }
-    out.records.insert(out.records.end(), sub.records.begin(), sub.records.end());
+    skipped = triangles - at[chunks];
+    RecordVector records(at[chunks]);
+    team.forEach(chunks, [&](std::size_t c) {
+        std::copy(parts[c].begin(), parts[c].end(),
+                  records.begin() + static_cast<std::ptrdiff_t>(at[c]));
+    });
+    return records;
 }
 
-// Reorders the records so that every subtree's leaves are one contiguous range, left subtree
-// first (the order the 8-wide collapse relies on), and points the leaves at it.
-void orderLeaves(Subtree& tree) {
-    std::vector<PrimRecord> ordered;
-    ordered.reserve(tree.records.size());
+// Bounds of all records, chunk by chunk on the team, merged in chunk order.
+RecordBounds boundsOnTeam(const RecordVector& records, BuildTeam& team) {
+    const std::size_t chunks = (records.size() + kBoundsChunk - 1) / kBoundsChunk;
+    std::vector<RecordBounds> parts(chunks);
+    team.forEach(chunks, [&](std::size_t i) {
+        const std::size_t first = i * kBoundsChunk;
+        const std::size_t last = std::min(records.size(), first + kBoundsChunk);
+        parts[i] = boundsOf(records.data() + first, records.data() + last);
+    });
+    RecordBounds all;
+    for (const RecordBounds& p : parts) {
+        all.merge(p);
+    }
+    return all;
+}
+
+// Where each part of the tree goes in the BVH's arrays.
+struct Layout {
+    std::vector<uint32_t> nodeAt;    // subtree i's local node k > 0 goes to nodeAt[i] + k - 1
+    std::vector<uint32_t> recordAt;  // subtree i's records start here
+    std::vector<uint32_t> topLeafAt; // per top node: where a top leaf's records go
+    std::size_t nodes = 0, records = 0;
+};
+
+// Nodes: the top's, then each subtree's but its root (which takes its slot in the top), in
+// the order of `deferred`. Leaf references: depth-first, left child first.
+Layout layOut(const Subtree& top, const std::vector<BuildTask>& deferred,
+              const std::vector<Subtree>& subtrees) {
+    Layout layout;
+    std::vector<int> subtreeAt(top.nodes.size(), -1); // top node -> the subtree it roots
+    layout.nodeAt.resize(subtrees.size());
+    layout.recordAt.resize(subtrees.size());
+    layout.topLeafAt.resize(top.nodes.size());
+    layout.nodes = top.nodes.size();
+    for (std::size_t i = 0; i < subtrees.size(); ++i) {
+        subtreeAt[deferred[i].slot] = static_cast<int>(i);
+        layout.nodeAt[i] = static_cast<uint32_t>(layout.nodes);
+        layout.nodes += subtrees[i].nodes.size() - 1;
+    }
     std::vector<uint32_t> stack{0};
     while (!stack.empty()) {
-        BvhNode& node = tree.nodes[stack.back()];
+        const uint32_t n = stack.back();
         stack.pop_back();
-        if (node.isLeaf()) {
-            const auto first = static_cast<uint32_t>(ordered.size());
-            ordered.insert(ordered.end(), tree.records.begin() + node.index,
-                           tree.records.begin() + node.index + node.count);
-            node.index = first;
+        if (subtreeAt[n] >= 0) {
+            layout.recordAt[static_cast<std::size_t>(subtreeAt[n])] =
+                static_cast<uint32_t>(layout.records);
+            layout.records += subtrees[static_cast<std::size_t>(subtreeAt[n])].records.size();
+        } else if (top.nodes[n].isLeaf()) {
+            layout.topLeafAt[n] = static_cast<uint32_t>(layout.records);
+            layout.records += top.nodes[n].count;
         } else {
-            stack.push_back(node.index + 1);
-            stack.push_back(node.index);
+            stack.push_back(top.nodes[n].index + 1);
+            stack.push_back(top.nodes[n].index);
         }
     }
-    tree.records.swap(ordered);
+    return layout;
 }
 
-// Widens every node box by `pad` (world units) so that box tests, done in rounded float
-// arithmetic, never cull a triangle the watertight test hits.
-void padBounds(std::vector<BvhNode>& nodes, float pad) {
-    for (BvhNode& node : nodes) {
-        node.lower -= glm::vec3(pad);
-        node.upper += glm::vec3(pad);
+// Where the leaves' triangles go: the BVH's own copies (the scalar form), or only their scene
+// indices (for the 8-wide form, which copies the triangles into its blocks itself).
+struct LeafOutput {
+    BvhTriangle* triangles = nullptr;
+    uint32_t* sceneIndices = nullptr;
+};
+
+// Writes a leaf's references, from leaf triangle `at` on.
+void writeLeaves(const Scene& scene, const PrimRecord* first, std::size_t count, std::size_t at,
+                 const LeafOutput& out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const uint32_t index = first[i].sceneIndex;
+        if (out.triangles) {
+            const Triangle& t = scene.triangles[index];
+            out.triangles[at + i] = BvhTriangle{t.v0, t.v1, t.v2, index};
+        } else {
+            out.sceneIndices[at + i] = index;
+        }
     }
+}
+
+// Box tests round; the watertight test's edge decisions round too. Every node box is widened by
+// `pad` so that box tests never cull a triangle the watertight test hits.
+BvhNode padded(BvhNode node, float pad) {
+    node.lower -= glm::vec3(pad);
+    node.upper += glm::vec3(pad);
+    return node;
+}
+
+// Fills bvh.nodes from the top and its subtrees, and the leaves' triangles (bvh.triangles, or
+// only their scene indices in `sceneIndices` when `indicesOnly`), subtrees on the team.
+void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTask>& deferred,
+              const std::vector<Subtree>& subtrees, float pad, bool indicesOnly, BuildTeam& team,
+              Bvh& bvh, std::vector<uint32_t>& sceneIndices) {
+    const Layout layout = layOut(top, deferred, subtrees);
+    bvh.nodes.resize(layout.nodes);
+    LeafOutput out;
+    if (indicesOnly) {
+        sceneIndices.resize(layout.records);
+        out.sceneIndices = sceneIndices.data();
+    } else {
+        bvh.triangles.resize(layout.records);
+        out.triangles = bvh.triangles.data();
+    }
+    for (std::size_t n = 0; n < top.nodes.size(); ++n) {
+        BvhNode node = top.nodes[n];
+        if (node.isLeaf()) {
+            writeLeaves(scene, top.records.data() + node.index, node.count, layout.topLeafAt[n],
+                        out);
+            node.index = layout.topLeafAt[n];
+        }
+        bvh.nodes[n] = padded(node, pad); // a subtree's root overwrites its slot below
+    }
+    team.forEach(subtrees.size(), [&](std::size_t i) {
+        const Subtree& sub = subtrees[i];
+        const uint32_t nodeOffset = layout.nodeAt[i] - 1, recordOffset = layout.recordAt[i];
+        for (std::size_t k = 0; k < sub.nodes.size(); ++k) {
+            BvhNode node = sub.nodes[k];
+            node.index += node.isLeaf() ? recordOffset : nodeOffset;
+            bvh.nodes[k == 0 ? deferred[i].slot : nodeOffset + k] = padded(node, pad);
+        }
+        writeLeaves(scene, sub.records.data(), sub.records.size(), recordOffset, out);
+    });
+    bvh.leafReferences = layout.records;
 }
 
 } // namespace
 
 Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     Bvh bvh;
-    std::vector<PrimRecord> records;
-    records.reserve(scene.triangles.size());
+    // A scene smaller than one subtree task gains nothing from more threads than one.
+    BuildTeam team(scene.triangles.size() < 2 * kMinTaskSize ? 1
+                                                             : resolveThreadCount(options.threads));
     float magnitude = 0.0f; // largest |coordinate| of a valid vertex
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-        const Triangle& t = scene.triangles[i];
-        if (!isValidTriangle(t)) {
-            ++bvh.skippedTriangles;
-            continue;
-        }
-        const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
-        const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
-        magnitude = std::max({magnitude, glm::abs(lower).x, glm::abs(lower).y, glm::abs(lower).z,
-                              glm::abs(upper).x, glm::abs(upper).y, glm::abs(upper).z});
-        records.push_back({lower, static_cast<uint32_t>(i), upper});
-    }
+    RecordVector records = makeRecords(scene, team, bvh.skippedTriangles, magnitude);
     if (records.empty()) {
         return bvh;
     }
 
     // Split boxes are widened by 2^-21 of the largest coordinate (several ulps of any vertex
-    // coordinate), and node boxes by 2^-19 below.
+    // coordinate), and node boxes by 2^-19 (far above the rounding of box tests and of the
+    // watertight test's edge decisions, and far below any visible size).
     const float slack = std::ldexp(std::max(magnitude, 1e-30f), -21);
-    presplitRecords(scene, options.presplitBudget, slack, records);
+    const float pad = std::ldexp(std::max(magnitude, 1e-30f), -19);
+    presplitRecords(scene, options.presplitBudget, slack, team, records);
+    BuildTask root;
+    root.bounds = boundsOnTeam(records, team);
     BuildContext context;
     if (options.spatialSplitBudget > 0.0f) {
-        Aabb all, centres;
-        boundsOf(records.data(), records.data() + records.size(), all, centres);
         context.scene = &scene;
         context.slack = slack;
-        context.minOverlapArea = options.spatialSplitOverlap * all.area();
+        context.minOverlapArea = options.spatialSplitOverlap * root.bounds.box.toAabb().area();
         context.minNodeOverlap = options.spatialSplitNodeOverlap;
     }
-    const Builder builder(options, context);
+    const SubtreeBuilder builder(options, context);
     const std::size_t total = records.size();
-    Subtree tree;
-    tree.nodes.reserve(2 * total);
-    tree.nodes.resize(1);
-    std::vector<BuildTask> deferred;
-    const std::size_t deferBelow = std::max(kMinTaskSize, total / 64);
-    BuildTask root{0, std::move(records), 0, 0};
+    root.count = static_cast<uint32_t>(total);
     root.splitBudget = static_cast<uint32_t>(
         std::min(1e9, static_cast<double>(std::max(0.0f, options.spatialSplitBudget)) *
                           static_cast<double>(total)));
-    builder.build(tree, std::move(root), deferBelow, &deferred);
+    RecordVector spare(total);
+    root.first = records.data();
+    root.spare = spare.data();
 
-    // The small subtrees, each into its own arrays, handed out to threads by an atomic counter.
+    // The top, one node at a time on the whole team.
+    Subtree top;
+    top.nodes.resize(1);
+    std::vector<BuildTask> deferred;
+    std::deque<RecordVector> arrays; // the top's spatial splits' children
+    builder.buildTop(top, root, team, std::max(kMinTaskSize, total / 64), deferred, arrays);
+
+    // The subtrees, largest first (the order they finish in does not matter).
     std::vector<Subtree> subtrees(deferred.size());
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < deferred.size();) {
-            BuildTask local = std::move(deferred[i]);
-            local.slot = 0;
-            subtrees[i].nodes.reserve(local.records.size() + 1);
-            subtrees[i].nodes.resize(1);
-            builder.build(subtrees[i], std::move(local), 0, nullptr);
+    std::vector<std::size_t> order(deferred.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return deferred[a].count > deferred[b].count;
+    });
+    team.forEach(order.size(), [&](std::size_t k) {
+        const std::size_t i = order[k];
+        BuildTask local = deferred[i];
+        local.slot = 0;
+        subtrees[i].nodes.reserve(local.count + 1);
+        subtrees[i].nodes.resize(1);
+        builder.buildSubtree(subtrees[i], local);
+    });
+    const bool wide = options.simd && bvhSimdSupported();
+    std::vector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
+    assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices);
+    subtrees = {};
+    if (wide && !buildWideBvh(bvh, scene, sceneIndices, team)) {
+        // The tree does not fit the wide form: the binary form keeps its own triangles.
+        bvh.triangles.resize(sceneIndices.size());
+        for (std::size_t i = 0; i < sceneIndices.size(); ++i) {
+            const Triangle& t = scene.triangles[sceneIndices[i]];
+            bvh.triangles[i] = BvhTriangle{t.v0, t.v1, t.v2, sceneIndices[i]};
         }
-    };
-    const int threads = std::min<int>(resolveThreadCount(options.threads),
-                                      static_cast<int>(std::max<std::size_t>(1, deferred.size())));
-    {
-        std::vector<std::jthread> helpers;
-        for (int i = 1; i < threads; ++i) {
-            helpers.emplace_back(work);
-        }
-        work();
-    }
-    for (std::size_t i = 0; i < deferred.size(); ++i) {
-        appendSubtree(tree, deferred[i].slot, subtrees[i]);
-    }
-    orderLeaves(tree);
-    records.swap(tree.records);
-    bvh.nodes.swap(tree.nodes);
-    bvh.nodes.shrink_to_fit();
-
-    // Box tests round; the watertight test's edge decisions round too. 2^-19 of the scene's
-    // largest coordinate is far above both errors and far below any visible size.
-    padBounds(bvh.nodes, std::ldexp(std::max(magnitude, 1e-30f), -19));
-
-    bvh.leafReferences = records.size();
-    bvh.triangles.resize(records.size());
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        const Triangle& t = scene.triangles[records[i].sceneIndex];
-        bvh.triangles[i] = BvhTriangle{t.v0, t.v1, t.v2, records[i].sceneIndex};
-    }
-    if (options.simd && bvhSimdSupported()) {
-        buildWideBvh(bvh);
     }
     return bvh;
 }

@@ -2,6 +2,11 @@
 // opening the child with the largest surface area until it has 8 children or none can open.
 // A binary subtree with at most kLeafMerge triangles becomes one leaf: one 8-lane triangle
 // test costs about as much as a 4-lane one, and it saves the box tests below it.
+//
+// The top of the wide tree is made first, down to binary subtrees of at most a number of
+// triangles that depends only on the tree; those become wide subtrees, made in parallel into
+// their own arrays and appended in a fixed order (top first, then each subtree's nodes and
+// blocks), so the result is the same whatever the thread count.
 
 #include "bvh_collapse.h"
 
@@ -13,6 +18,7 @@ namespace raylab {
 namespace {
 
 constexpr uint32_t kLeafMerge = 8;
+constexpr uint32_t kMinPartTriangles = 2048; // smallest wide subtree made as a parallel task
 
 struct Range {
     uint32_t first = 0, count = 0; // the subtree's triangles [first, first + count)
@@ -20,101 +26,148 @@ struct Range {
 
 float area(const BvhNode& n) { return Aabb{n.lower, n.upper}.area(); }
 
-class Collapser {
-public:
-    explicit Collapser(Bvh& bvh)
-        : bvh_(bvh), ranges_(bvh.nodes.size()), slotOf_(bvh.triangles.size(), 0) {
+// A wide subtree waiting to be made: the binary node it stands for, and where it hangs.
+struct PendingPart {
+    uint32_t binary = 0;
+    uint32_t parent = 0; // wide node (of the top) whose child it is
+    int lane = 0;
+    int depth = 0; // of its root in the whole wide tree
+};
+
+// A part of the wide tree in its own arrays: inner children index nodes, leaves index blocks.
+struct WidePart {
+    std::vector<BvhWideNode> nodes; // nodes[0] is its root
+    std::vector<BvhTriangleBlock> blocks;
+    int depth = 0;         // deepest level reached, counted in the whole tree
+    bool overflow = false; // a leaf or the block count does not fit a child reference
+};
+
+// What collapsing needs from the binary tree; shared read-only by the threads, except slotOf,
+// of which each part writes only its own triangles' entries.
+struct BinaryTree {
+    const Bvh& bvh;
+    const Scene& scene;
+    const std::vector<uint32_t>& leafScene; // leaf triangle -> scene triangle
+    std::vector<Range> ranges;              // per binary node
+    std::vector<uint32_t> slotOf;           // leaf triangle -> its lane in its part's blocks
+
+    BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves)
+        : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()), slotOf(leaves.size()) {
         // Children always follow their parent, so a backwards pass sees children first.
-        for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
-            const BvhNode& n = bvh.nodes[i];
+        for (std::size_t i = b.nodes.size(); i-- > 0;) {
+            const BvhNode& n = b.nodes[i];
             if (n.isLeaf()) {
-                ranges_[i] = {n.index, n.count};
+                ranges[i] = {n.index, n.count};
             } else {
-                ranges_[i] = {ranges_[n.index].first,
-                              ranges_[n.index].count + ranges_[n.index + 1].count};
+                ranges[i] = {ranges[n.index].first,
+                             ranges[n.index].count + ranges[n.index + 1].count};
             }
         }
     }
 
-    // Builds every wide node; returns the depth of the wide tree.
-    int run() {
-        bvh_.wideNodes.reserve(bvh_.nodes.size() / 4 + 1);
-        bvh_.wideNodes.emplace_back();
-        int deepest = 0;
-        std::vector<Pending> stack{{0, 0, 1}};
+    bool opens(uint32_t binary) const {
+        return !bvh.nodes[binary].isLeaf() && ranges[binary].count > kLeafMerge;
+    }
+};
+
+class Collapser {
+public:
+    // Makes the wide subtree of binary node `binary` (whose root is at depth `depth`) into
+    // part. With deferBelow > 0, children that open and hold at most deferBelow triangles
+    // are left to `deferred` instead (their child references are set later).
+    Collapser(BinaryTree& tree, WidePart& part, uint32_t deferBelow,
+              std::vector<PendingPart>* deferred)
+        : tree_(tree), part_(part), deferBelow_(deferBelow), deferred_(deferred) {}
+
+    void run(uint32_t binary, int depth) {
+        part_.nodes.emplace_back();
+        std::vector<Pending> stack{{binary, 0, depth}};
         while (!stack.empty()) {
             const Pending p = stack.back();
             stack.pop_back();
-            deepest = std::max(deepest, p.depth);
+            part_.depth = std::max(part_.depth, p.depth);
             fill(p, stack);
         }
-        return deepest;
     }
 
 private:
     struct Pending {
         uint32_t binary; // binary node the wide node stands for
-        uint32_t wide;   // its slot in wideNodes
+        uint32_t wide;   // its slot in part_.nodes
         int depth;
     };
 
-    bool opens(uint32_t binary) const {
-        return !bvh_.nodes[binary].isLeaf() && ranges_[binary].count > kLeafMerge;
-    }
+    const BvhNode& node(uint32_t binary) const { return tree_.bvh.nodes[binary]; }
 
     void fill(const Pending& p, std::vector<Pending>& stack) {
-        std::vector<uint32_t> slots;
-        if (opens(p.binary)) {
-            slots = {bvh_.nodes[p.binary].index, bvh_.nodes[p.binary].index + 1};
+        uint32_t slots[kWideLanes];
+        float areas[kWideLanes]; // of slots that can open; -1 for the others
+        int count = 0;
+        auto areaIfOpens = [&](uint32_t binary) {
+            return tree_.opens(binary) ? area(node(binary)) : -1.0f;
+        };
+        auto add = [&](uint32_t binary) {
+            slots[count] = binary;
+            areas[count] = areaIfOpens(binary);
+            ++count;
+        };
+        if (tree_.opens(p.binary)) {
+            add(node(p.binary).index);
+            add(node(p.binary).index + 1);
         } else {
-            slots = {p.binary};
+            add(p.binary);
         }
-        while (slots.size() < static_cast<std::size_t>(kWideLanes)) {
+        while (count < kWideLanes) {
             int best = -1;
-            for (std::size_t s = 0; s < slots.size(); ++s) {
-                if (opens(slots[s]) &&
-                    (best < 0 || area(bvh_.nodes[slots[s]]) > area(bvh_.nodes[slots[best]]))) {
-                    best = static_cast<int>(s);
+            for (int s = 0; s < count; ++s) {
+                if (areas[s] >= 0.0f && (best < 0 || areas[s] > areas[best])) {
+                    best = s;
                 }
             }
             if (best < 0) {
                 break;
             }
+            // The opened node's left child takes its slot, its right child the next free one.
             const uint32_t opened = slots[best];
-            slots[best] = bvh_.nodes[opened].index;
-            slots.push_back(bvh_.nodes[opened].index + 1);
+            slots[best] = node(opened).index;
+            areas[best] = areaIfOpens(slots[best]);
+            add(node(opened).index + 1);
         }
 
-        BvhWideNode node;
+        BvhWideNode wide{};
         for (int c = 0; c < kWideLanes; ++c) {
             for (int a = 0; a < 3; ++a) {
-                node.lower[a][c] = kInfinity;
-                node.upper[a][c] = -kInfinity;
+                wide.lower[a][c] = kInfinity;
+                wide.upper[a][c] = -kInfinity;
             }
-            node.child[c] = kWideEmpty;
+            wide.child[c] = kWideEmpty;
         }
-        for (std::size_t s = 0; s < slots.size(); ++s) {
-            const BvhNode& b = bvh_.nodes[slots[s]];
+        for (int s = 0; s < count; ++s) {
+            const BvhNode& b = node(slots[s]);
             for (int a = 0; a < 3; ++a) {
-                node.lower[a][s] = b.lower[a];
-                node.upper[a][s] = b.upper[a];
+                wide.lower[a][s] = b.lower[a];
+                wide.upper[a][s] = b.upper[a];
             }
-            if (opens(slots[s])) {
-                const auto wide = static_cast<uint32_t>(bvh_.wideNodes.size());
-                bvh_.wideNodes.emplace_back();
-                node.child[s] = wide;
-                stack.push_back({slots[s], wide, p.depth + 1});
-            } else {
-                const auto first = static_cast<uint32_t>(bvh_.triangleBlocks.size());
-                const uint32_t blocks = addBlocks(ranges_[slots[s]]);
-                if (blocks > kWideMaxLeafBlocks || first + blocks > kWideFirstBlockMask) {
-                    overflow_ = true;
+            if (tree_.opens(slots[s])) {
+                if (deferBelow_ > 0 && tree_.ranges[slots[s]].count <= deferBelow_) {
+                    deferred_->push_back({slots[s], p.wide, s, p.depth + 1});
                     continue;
                 }
-                node.child[s] = kWideLeafFlag | (blocks - 1) << kWideBlockShift | first;
+                const auto child = static_cast<uint32_t>(part_.nodes.size());
+                part_.nodes.emplace_back();
+                wide.child[s] = child;
+                stack.push_back({slots[s], child, p.depth + 1});
+            } else {
+                const auto first = static_cast<uint32_t>(part_.blocks.size());
+                const uint32_t blocks = addBlocks(tree_.ranges[slots[s]]);
+                if (blocks > kWideMaxLeafBlocks || first + blocks > kWideFirstBlockMask) {
+                    part_.overflow = true;
+                    continue;
+                }
+                wide.child[s] = kWideLeafFlag | (blocks - 1) << kWideBlockShift | first;
             }
         }
-        bvh_.wideNodes[p.wide] = node;
+        part_.nodes[p.wide] = wide;
     }
 
     // Appends the blocks of a leaf; spare lanes repeat the block's first triangle.
@@ -126,65 +179,116 @@ private:
                 const uint32_t i = first + static_cast<uint32_t>(lane) < r.first + r.count
                                        ? first + static_cast<uint32_t>(lane)
                                        : first;
-                const BvhTriangle& t = bvh_.triangles[i];
+                const Triangle& t = tree_.scene.triangles[tree_.leafScene[i]];
                 const glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
                 for (int k = 0; k < 3; ++k) {
                     for (int a = 0; a < 3; ++a) {
                         block.vertex[k][a][lane] = (*v[k])[a];
                     }
                 }
-                block.sceneIndex[lane] = t.sceneIndex;
+                block.sceneIndex[lane] = tree_.leafScene[i];
                 if (i == first + static_cast<uint32_t>(lane)) {
-                    slotOf_[i] = static_cast<uint32_t>(bvh_.triangleBlocks.size()) * kWideLanes +
-                                 static_cast<uint32_t>(lane);
+                    tree_.slotOf[i] = static_cast<uint32_t>(part_.blocks.size()) * kWideLanes +
+                                      static_cast<uint32_t>(lane);
                 }
             }
-            bvh_.triangleBlocks.push_back(block);
+            part_.blocks.push_back(block);
             ++blocks;
         }
         return blocks;
     }
 
-    Bvh& bvh_;
-    std::vector<Range> ranges_;
-    std::vector<uint32_t> slotOf_; // leaf triangle index -> its lane in triangleBlocks
-    bool overflow_ = false;        // a leaf or the block count does not fit a child reference
-
-public:
-    bool overflowed() const { return overflow_; }
-
-    // Points the binary leaves at the blocks' lanes and drops the binary triangle copies. A
-    // binary leaf lies inside one wide leaf, whose blocks hold its triangles in leaf order with
-    // padding only after the last one, so its triangles stay contiguous slots.
-    void shareTriangles() {
-        for (BvhNode& node : bvh_.nodes) {
-            if (node.isLeaf()) {
-                node.index = slotOf_[node.index];
-            }
-        }
-        bvh_.triangles.clear();
-        bvh_.triangles.shrink_to_fit();
-    }
+    BinaryTree& tree_;
+    WidePart& part_;
+    uint32_t deferBelow_;
+    std::vector<PendingPart>* deferred_;
 };
+
+// Moves a part's child references by its offsets in the whole arrays.
+void relocate(WidePart& part, uint32_t nodeOffset, uint32_t blockOffset) {
+    for (BvhWideNode& n : part.nodes) {
+        for (uint32_t& c : n.child) {
+            if (c == kWideEmpty) {
+                continue;
+            }
+            if ((c & kWideLeafFlag) == 0) {
+                c += nodeOffset;
+                continue;
+            }
+            const uint32_t blocks = ((c >> kWideBlockShift) & 7u) + 1;
+            const uint32_t first = (c & kWideFirstBlockMask) + blockOffset;
+            if (first + blocks > kWideFirstBlockMask) {
+                part.overflow = true;
+            }
+            c = kWideLeafFlag | (blocks - 1) << kWideBlockShift | (first & kWideFirstBlockMask);
+        }
+    }
+}
 
 } // namespace
 
-void buildWideBvh(Bvh& bvh) {
+bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
+                  BuildTeam& team) {
     bvh.wideNodes.clear();
     bvh.triangleBlocks.clear();
     if (bvh.nodes.empty()) {
-        return;
+        return false;
     }
-    Collapser collapser(bvh);
-    const int depth = collapser.run();
-    if (collapser.overflowed() || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
-        bvh.wideNodes.clear();
-        bvh.triangleBlocks.clear();
-    } else {
-        collapser.shareTriangles();
+    BinaryTree tree(bvh, scene, leafScene);
+    WidePart top;
+    std::vector<PendingPart> pending;
+    const uint32_t deferBelow =
+        std::max(kMinPartTriangles, static_cast<uint32_t>(leafScene.size() / 128));
+    Collapser(tree, top, deferBelow, &pending).run(0, 1);
+
+    std::vector<WidePart> parts(pending.size());
+    team.forEach(parts.size(), [&](std::size_t i) {
+        parts[i].depth = pending[i].depth;
+        Collapser(tree, parts[i], 0, nullptr).run(pending[i].binary, pending[i].depth);
+    });
+
+    // Offsets, then every part's nodes and blocks in place, their triangles' slots moved.
+    std::vector<uint32_t> nodeAt(parts.size()), blockAt(parts.size());
+    std::size_t nodes = top.nodes.size(), blocks = top.blocks.size();
+    int depth = top.depth;
+    bool overflow = top.overflow;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        nodeAt[i] = static_cast<uint32_t>(nodes);
+        blockAt[i] = static_cast<uint32_t>(std::min<std::size_t>(blocks, kWideFirstBlockMask));
+        nodes += parts[i].nodes.size();
+        blocks += parts[i].blocks.size();
+        depth = std::max(depth, parts[i].depth);
+        overflow = overflow || parts[i].overflow;
+        top.nodes[pending[i].parent].child[pending[i].lane] = nodeAt[i];
     }
-    bvh.wideNodes.shrink_to_fit();
-    bvh.triangleBlocks.shrink_to_fit();
+    if (overflow || blocks > kWideFirstBlockMask || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
+        return false;
+    }
+    bvh.wideNodes.resize(nodes);
+    bvh.triangleBlocks.resize(blocks);
+    std::copy(top.nodes.begin(), top.nodes.end(), bvh.wideNodes.begin());
+    std::copy(top.blocks.begin(), top.blocks.end(), bvh.triangleBlocks.begin());
+    team.forEach(parts.size(), [&](std::size_t i) {
+        relocate(parts[i], nodeAt[i], blockAt[i]);
+        std::copy(parts[i].nodes.begin(), parts[i].nodes.end(), bvh.wideNodes.begin() + nodeAt[i]);
+        std::copy(parts[i].blocks.begin(), parts[i].blocks.end(),
+                  bvh.triangleBlocks.begin() + blockAt[i]);
+        const Range r = tree.ranges[pending[i].binary];
+        for (uint32_t t = r.first; t < r.first + r.count; ++t) {
+            tree.slotOf[t] += blockAt[i] * kWideLanes;
+        }
+        parts[i] = WidePart{};
+    });
+
+    // Points the binary leaves at the blocks' lanes. A binary leaf lies inside one wide leaf,
+    // whose blocks hold its triangles in leaf order with padding only after the last one, so
+    // its triangles stay contiguous slots.
+    for (BvhNode& node : bvh.nodes) {
+        if (node.isLeaf()) {
+            node.index = tree.slotOf[node.index];
+        }
+    }
+    return true;
 }
 
 } // namespace raylab

@@ -2,6 +2,10 @@
 // Collapses the binary BVH into the 8-wide form of bvh_wide.h (internal to core).
 
 #include "bvh.h"
+#include "bvh_build_team.h"
+
+#include <cstdint>
+#include <vector>
 
 namespace raylab {
 
@@ -9,9 +13,13 @@ namespace raylab {
 // scalar path then runs) for a tree that would need more.
 inline constexpr int kWideStackSize = 512;
 
-// Fills bvh.wideNodes and bvh.triangleBlocks from bvh.nodes and bvh.triangles; then the binary
-// leaves index the blocks' lanes and bvh.triangles is emptied (see Bvh::triangles). Leaves bvh
-// as it was when the tree does not fit the wide form.
-void buildWideBvh(Bvh& bvh);
+// Fills bvh.wideNodes and bvh.triangleBlocks from bvh.nodes, whose leaves hold leaf triangles
+// [index, index + count), leaf triangle i being scene.triangles[leafScene[i]]; then points the
+// binary leaves at the blocks' lanes (see Bvh::triangles) and returns true. Returns false, with
+// the wide form empty and bvh.nodes unchanged, when the tree does not fit the wide form. The
+// top of the wide tree is made on the calling thread, its subtrees on the team; the result
+// does not depend on the team's size.
+bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
+                  BuildTeam& team);
 
 } // namespace raylab

@@ -25,7 +25,7 @@ int longestAxis(const Aabb& b) {
 // Splits t's box into up to pieces + 1 boxes, always halving the largest one along its
 // longest axis, and appends them as references of scene triangle `index`.
 void splitTriangle(const Triangle& t, uint32_t index, const Aabb& box, uint32_t pieces, float slack,
-                   std::vector<Aabb>& work, std::vector<PrimRecord>& out) {
+                   std::vector<Aabb>& work, RecordVector& out) {
     work.assign(1, box);
     for (uint32_t n = 0; n < pieces; ++n) {
         std::size_t largest = 0;
@@ -50,42 +50,62 @@ void splitTriangle(const Triangle& t, uint32_t index, const Aabb& box, uint32_t 
         work.push_back(right);
     }
     for (const Aabb& b : work) {
-        out.push_back({b.lower, index, b.upper});
+        out.push_back({b.lower, index, b.upper, 0.0f});
     }
 }
 
 } // namespace
 
-void presplitRecords(const Scene& scene, float budget, float slack,
-                     std::vector<PrimRecord>& records) {
+void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& team,
+                     RecordVector& records) {
     if (records.empty() || !(budget > 0.0f)) {
         return;
     }
+    // Chunks of a fixed size: their partial sums are added in chunk order, and their outputs
+    // concatenated in chunk order, whatever thread made them.
+    constexpr std::size_t kChunk = 32768;
+    const std::size_t chunks = (records.size() + kChunk - 1) / kChunk;
+    auto chunkEnd = [&](std::size_t c) { return std::min(records.size(), (c + 1) * kChunk); };
     std::vector<float> priority(records.size());
+    std::vector<double> partial(chunks, 0.0);
+    team.forEach(chunks, [&](std::size_t c) {
+        for (std::size_t i = c * kChunk; i < chunkEnd(c); ++i) {
+            const Aabb box{records[i].lower, records[i].upper};
+            priority[i] = std::cbrt(waste(scene.triangles[records[i].sceneIndex], box));
+            partial[c] += priority[i];
+        }
+    });
     double total = 0.0;
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        const Aabb box{records[i].lower, records[i].upper};
-        priority[i] = std::cbrt(waste(scene.triangles[records[i].sceneIndex], box));
-        total += priority[i];
+    for (const double p : partial) {
+        total += p;
     }
     if (!(total > 0.0)) {
         return;
     }
     const double scale = static_cast<double>(budget) * static_cast<double>(records.size()) / total;
-    std::vector<PrimRecord> out;
-    out.reserve(records.size() +
-                static_cast<std::size_t>(budget * static_cast<float>(records.size())) + 16);
-    std::vector<Aabb> work;
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        const auto pieces = static_cast<uint32_t>(std::min(64.0, scale * priority[i]));
-        if (pieces == 0) {
-            out.push_back(records[i]);
-            continue;
+    std::vector<RecordVector> outs(chunks);
+    team.forEach(chunks, [&](std::size_t c) {
+        RecordVector& out = outs[c];
+        std::vector<Aabb> work;
+        for (std::size_t i = c * kChunk; i < chunkEnd(c); ++i) {
+            const auto pieces = static_cast<uint32_t>(std::min(64.0, scale * priority[i]));
+            if (pieces == 0) {
+                out.push_back(records[i]);
+                continue;
+            }
+            splitTriangle(scene.triangles[records[i].sceneIndex], records[i].sceneIndex,
+                          Aabb{records[i].lower, records[i].upper}, pieces, slack, work, out);
         }
-        splitTriangle(scene.triangles[records[i].sceneIndex], records[i].sceneIndex,
-                      Aabb{records[i].lower, records[i].upper}, pieces, slack, work, out);
+    });
+    std::vector<std::size_t> at(chunks + 1, 0);
+    for (std::size_t c = 0; c < chunks; ++c) {
+        at[c + 1] = at[c] + outs[c].size();
     }
-    records.swap(out);
+    records.resize(at[chunks]);
+    team.forEach(chunks, [&](std::size_t c) {
+        std::copy(outs[c].begin(), outs[c].end(),
+                  records.begin() + static_cast<std::ptrdiff_t>(at[c]));
+    });
 }
 
 } // namespace raylab

@@ -10,6 +10,7 @@
 // index wherever it is tested, so answers do not change.
 
 #include "bvh_binning.h"
+#include "bvh_build_team.h"
 #include "scene.h"
 
 #include <vector>
@@ -19,8 +20,8 @@ namespace raylab {
 // Replaces records (one per valid triangle) by references: at most about budget * records.size()
 // extra ones, given to the triangles with the most box surface beyond their own area. `slack`
 // (world units) widens each split box to cover the rounding of the edge-plane intersections.
-// Deterministic: depends only on the triangles and the arguments.
-void presplitRecords(const Scene& scene, float budget, float slack,
-                     std::vector<PrimRecord>& records);
+// Deterministic: depends only on the triangles and the arguments, not on the team's size.
+void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& team,
+                     RecordVector& records);
 
 } // namespace raylab

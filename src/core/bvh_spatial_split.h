@@ -26,15 +26,28 @@ struct SpatialSplit {
     uint32_t references = 0; // N(left) + N(right) estimated by the bins
 };
 
-// The best spatial split of refs (whose boxes lie in `bounds`) over kSpatialBins planes per
-// axis. `slack` is splitBox's (bvh_clip.h).
-SpatialSplit findSpatialSplit(const Scene& scene, const std::vector<PrimRecord>& refs,
-                              const Aabb& bounds, float slack);
+// The spatial bins of some references on the three axes: per bin, the box of the parts of the
+// triangles inside it and how many references start and end in it. min, max and sums are
+// exact, so bins of parts of a node merged in a fixed order equal the bins of the whole.
+struct SpatialBins {
+    SseBox box[3][kSpatialBins];
+    uint32_t entering[3][kSpatialBins] = {};
+    uint32_t leaving[3][kSpatialBins] = {};
+    void merge(const SpatialBins& other);
+};
 
-// Distributes refs to left and right by split's plane, splitting the references that cross it.
-// Returns false (left and right unspecified) when a side would be empty.
-bool applySpatialSplit(const Scene& scene, const std::vector<PrimRecord>& refs,
-                       const SpatialSplit& split, float slack, std::vector<PrimRecord>& left,
-                       std::vector<PrimRecord>& right);
+// Adds refs [first, last) (whose boxes lie in `bounds`, the node's) to `bins`, over
+// kSpatialBins planes per axis. `slack` is splitBox's (bvh_clip.h).
+void binSpatial(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                const Aabb& bounds, float slack, SpatialBins& bins);
+
+// The best spatial split of a node with these bins and bounds.
+SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds);
+
+// Appends refs [first, last) to left and right by split's plane, splitting the references that
+// cross it, in the order of the input, and adds what it appends to the sides' bounds.
+void applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                       const SpatialSplit& split, float slack, RecordVector& left,
+                       RecordVector& right, RecordBounds& leftBounds, RecordBounds& rightBounds);
 
 } // namespace raylab

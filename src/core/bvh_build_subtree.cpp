@@ -1,0 +1,197 @@
+#include "bvh_build_subtree.h"
+
+#include <algorithm>
+
+namespace raylab {
+
+namespace {
+
+constexpr int kMaxLeafSize = 64;       // cap on BvhBuildOptions::maxLeafSize
+constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the median (depth bound)
+constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
+
+// Runs job(i) for i in [0, count): on the team when there is one.
+template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, const Job& job) {
+    if (count == 1 || !team) {
+        for (std::size_t i = 0; i < count; ++i) {
+            job(i);
+        }
+        return;
+    }
+    team->forEach(count, job);
+}
+
+} // namespace
+
+SubtreeBuilder::SubtreeBuilder(const BvhBuildOptions& options, const BuildContext& context)
+    : maxLeaf_(std::clamp(options.maxLeafSize, 1, kMaxLeafSize)),
+      bins_(std::clamp(options.binCount, 2, kMaxBins)), context_(context) {}
+
+SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
+                                   const RecordBounds& nodeBounds, int depth, uint32_t splitBudget,
+                                   BuildTeam* team, BinSet& scratch,
+                                   std::vector<BinSet>& chunkBins) const {
+    SplitChoice choice;
+    if (count <= 1) {
+        return choice;
+    }
+    const bool mustSplit = count > static_cast<uint32_t>(maxLeaf_);
+    const SplitKind orMedian = mustSplit ? SplitKind::Median : SplitKind::Leaf;
+    const Aabb bounds = nodeBounds.box.toAabb();
+    const Aabb centroids = nodeBounds.centres.toAabb();
+    const glm::vec3 extent = centroids.upper - centroids.lower;
+    const bool flat = !(extent.x > 0.0f) && !(extent.y > 0.0f) && !(extent.z > 0.0f);
+    if (flat || depth >= kSahDepthLimit) {
+        choice.kind = orMedian;
+        return choice;
+    }
+    const std::size_t chunks = team ? (count + kBuildChunkSize - 1) / kBuildChunkSize : 1;
+    auto chunkBegin = [&](std::size_t i) {
+        return first + std::min<std::size_t>(count, i * kBuildChunkSize);
+    };
+    auto chunkEnd = [&](std::size_t i) { return chunks == 1 ? first + count : chunkBegin(i + 1); };
+
+    // The best object split, from the bins of every chunk merged in chunk order.
+    const ObjectSplit frame = objectBinFrame(centroids, bins_);
+    scratch.reset(bins_);
+    chunkBins.resize(chunks > 1 ? chunks : 0);
+    if (chunks > 1) {
+        forEachChunk(chunks, team, [&](std::size_t i) {
+            chunkBins[i].reset(bins_);
+            binRecords(chunkBegin(i), chunkEnd(i), frame.lower, frame.scale, bins_, chunkBins[i]);
+        });
+        for (const BinSet& b : chunkBins) {
+            scratch.merge(b, bins_);
+        }
+    } else {
+        binRecords(first, first + count, frame.lower, frame.scale, bins_, scratch);
+    }
+    choice.object = bestObjectSplit(scratch, bins_, count, frame);
+
+    // The best spatial split, where the object split's children overlap much.
+    float bestCost = choice.object.cost;
+    if (splitBudget > 0 && context_.scene && choice.object.overlapArea > context_.minOverlapArea &&
+        choice.object.overlapArea > context_.minNodeOverlap * bounds.area()) {
+        std::vector<SpatialBins> parts(chunks);
+        forEachChunk(chunks, team, [&](std::size_t i) {
+            binSpatial(*context_.scene, chunkBegin(i), chunkEnd(i), bounds, context_.slack,
+                       parts[i]);
+        });
+        for (std::size_t i = 1; i < parts.size(); ++i) {
+            parts[0].merge(parts[i]);
+        }
+        choice.spatial = bestSpatialSplit(parts[0], bounds);
+        if (choice.spatial.cost < bestCost && choice.spatial.references - count <= splitBudget) {
+            bestCost = choice.spatial.cost;
+        } else {
+            choice.spatial.axis = -1;
+        }
+    }
+    if (choice.object.axis < 0 && choice.spatial.axis < 0) {
+        choice.kind = orMedian;
+        return choice;
+    }
+    const float area = bounds.area();
+    const float splitCost = kTraversalCost * area + bestCost;
+    const float leafCost = static_cast<float>(count) * area;
+    if (!mustSplit && leafCost <= splitCost) {
+        return choice; // a leaf
+    }
+    // The bins estimate the references a spatial split makes; rounding at the plane may make a
+    // few more, so the budget is checked again on the real split, falling back to the object
+    // split.
+    const SplitKind objectOrMedian = choice.object.axis >= 0 ? SplitKind::Object : orMedian;
+    choice.kind = choice.spatial.axis >= 0 ? SplitKind::Spatial : objectOrMedian;
+    choice.fallback = objectOrMedian;
+    return choice;
+}
+
+void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
+    std::vector<BuildTask> stack{root};
+    std::deque<RecordVector> arrays; // the children of spatial splits
+    BinSet scratch;
+    std::vector<BinSet> noChunks;
+    RecordVector lefts, rights;
+    while (!stack.empty()) {
+        const BuildTask task = stack.back();
+        stack.pop_back();
+        const Aabb box = task.bounds.box.toAabb();
+        out.nodes[task.slot].lower = box.lower;
+        out.nodes[task.slot].upper = box.upper;
+        const SplitChoice choice = choose(task.first, task.count, task.bounds, task.depth,
+                                          task.splitBudget, nullptr, scratch, noChunks);
+        BuildTask left, right;
+        SplitKind kind = choice.kind;
+        if (kind == SplitKind::Spatial) {
+            lefts.clear();
+            rights.clear();
+            applySpatialSplit(*context_.scene, task.first, task.first + task.count, choice.spatial,
+                              context_.slack, lefts, rights, left.bounds, right.bounds);
+            if (!lefts.empty() && !rights.empty() &&
+                lefts.size() + rights.size() - task.count <= task.splitBudget) {
+                RecordVector& both = arrays.emplace_back();
+                both.reserve(lefts.size() + rights.size());
+                both.insert(both.end(), lefts.begin(), lefts.end());
+                both.insert(both.end(), rights.begin(), rights.end());
+                RecordVector& spare = arrays.emplace_back(both.size());
+                left.first = both.data();
+                left.spare = spare.data();
+                left.count = static_cast<uint32_t>(lefts.size());
+                right.first = both.data() + lefts.size();
+                right.spare = spare.data() + lefts.size();
+                right.count = static_cast<uint32_t>(rights.size());
+            } else {
+                kind = choice.fallback;
+                left.bounds = right.bounds = RecordBounds{};
+            }
+        }
+        if (kind == SplitKind::Object) {
+            // Into the spare room, which the children then own as their references; the
+            // parent's room becomes their spare.
+            partitionRecords(task.first, task.first + task.count, choice.object, bins_, task.spare,
+                             task.spare + choice.object.leftCount, left.bounds, right.bounds);
+            left.first = task.spare;
+            left.spare = task.first;
+            left.count = choice.object.leftCount;
+            right.first = task.spare + left.count;
+            right.spare = task.first + left.count;
+            right.count = task.count - left.count;
+        } else if (kind == SplitKind::Median) {
+            medianOrder(task.first, task.count, task.bounds);
+            left.first = task.first;
+            left.spare = task.spare;
+            left.count = task.count / 2;
+            right.first = task.first + left.count;
+            right.spare = task.spare + left.count;
+            right.count = task.count - left.count;
+            left.bounds = boundsOf(left.first, left.first + left.count);
+            right.bounds = boundsOf(right.first, right.first + right.count);
+        } else if (kind == SplitKind::Leaf) {
+            out.nodes[task.slot].index = static_cast<uint32_t>(out.records.size());
+            out.nodes[task.slot].count = task.count;
+            out.records.insert(out.records.end(), task.first, task.first + task.count);
+            continue;
+        }
+        splitIntoChildren(task, left, right, out, stack);
+    }
+}
+
+void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,
+                       std::vector<BuildTask>& stack) {
+    const auto first = static_cast<uint32_t>(out.nodes.size());
+    out.nodes.resize(out.nodes.size() + 2);
+    out.nodes[task.slot].index = first;
+    out.nodes[task.slot].count = 0;
+    const std::size_t sizes = std::size_t{left.count} + right.count;
+    const uint64_t budget =
+        task.splitBudget - std::min<uint64_t>(task.splitBudget, sizes - task.count);
+    left.slot = first;
+    right.slot = first + 1;
+    left.depth = right.depth = task.depth + 1;
+    left.splitBudget = static_cast<uint32_t>(budget * left.count / sizes);
+    right.splitBudget = static_cast<uint32_t>(budget) - left.splitBudget;
+    stack.push_back(right);
+    stack.push_back(left);
+}
+
+} // namespace raylab

@@ -1,0 +1,100 @@
+#pragma once
+// The binned SAH builder of bvh_build.cpp (internal to core): builds the binary subtree of a set
+// of references, splitting nodes by the best object split (bvh_build_object_split.h) or, where
+// its children overlap much, the best spatial split (bvh_spatial_split.h), within a budget of
+// extra references.
+
+#include "bvh.h"
+#include "bvh_binning.h"
+#include "bvh_build_object_split.h"
+#include "bvh_build_team.h"
+#include "bvh_spatial_split.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+namespace raylab {
+
+// The references [first, first + count) of a subtree waiting to become the node at
+// nodes[slot]. The task may reorder them in place; it does not own them.
+struct BuildTask {
+    uint32_t slot = 0;
+    PrimRecord* first = nullptr;
+    uint32_t count = 0;
+    RecordBounds bounds; // of the references: the node's box and its centroids' box
+    int depth = 0;
+    uint32_t splitBudget = 0;    // extra references its spatial splits may still make
+    PrimRecord* spare = nullptr; // room for `count` references, free to overwrite
+};
+
+// What the build needs besides the references.
+struct BuildContext {
+    const Scene* scene = nullptr; // null: no spatial splits
+    float slack = 0.0f;           // splitBox's (bvh_clip.h)
+    float minOverlapArea = 0.0f;  // spatial splits only where object splits overlap more
+    float minNodeOverlap = 0.0f;  // ... and more than this fraction of the node's own surface
+};
+
+// A built subtree: nodes[0] is its root; leaf node i holds records [index, index + count).
+struct Subtree {
+    std::vector<BvhNode> nodes;
+    RecordVector records;
+};
+
+// Makes task's node (out.nodes[task.slot]) an inner node over two new nodes for left and right,
+// shares the split budget task has left after the split by the children's sizes, and pushes them
+// on stack, left on top (so its subtree is built, and stored, first).
+void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,
+                       std::vector<BuildTask>& stack);
+
+// What a node's references should do, as SubtreeBuilder::choose decides it.
+enum class SplitKind { Leaf, Median, Spatial, Object };
+
+struct SplitChoice {
+    SplitKind kind = SplitKind::Leaf;
+    SplitKind fallback = SplitKind::Leaf; // when a Spatial split turns out empty or over budget
+    ObjectSplit object;
+    SpatialSplit spatial;
+};
+
+class SubtreeBuilder {
+public:
+    SubtreeBuilder(const BvhBuildOptions& options, const BuildContext& context);
+
+    // Both build the subtree of `root` into out: root at out.nodes[root.slot], the two children
+    // of a split appended as a pair, the left child's subtree before the right one's.
+
+    // The top of the tree, on the team (bvh_build_top.cpp): nodes of more than `deferBelow`
+    // references are split with the team's threads, their references cut into chunks whose
+    // size depends only on their count, bins merged and children written in chunk order (to
+    // the parent's spare room: the two ranges swap roles at each level); nodes of at most
+    // `deferBelow` references that must split are appended to `deferred` instead, their
+    // references left where they are. Spatial splits put their children in new arrays of
+    // `arrays`, which must outlive the deferred tasks. The result does not depend on the
+    // team's size.
+    void buildTop(Subtree& out, BuildTask root, BuildTeam& team, std::size_t deferBelow,
+                  std::vector<BuildTask>& deferred, std::deque<RecordVector>& arrays) const;
+
+    // A whole subtree on this thread, its references moving between their room and the spare
+    // room at each split. Leaves' references go to out.records in depth-first order, left
+    // child first.
+    void buildSubtree(Subtree& out, const BuildTask& root) const;
+
+private:
+    // The split of references [first, first + count) of a node, binned by chunks on the team
+    // when there is one (each chunk's bins then stay in chunkBins), else in one go.
+    SplitChoice choose(const PrimRecord* first, uint32_t count, const RecordBounds& bounds,
+                       int depth, uint32_t splitBudget, BuildTeam* team, BinSet& scratch,
+                       std::vector<BinSet>& chunkBins) const;
+
+    int maxLeaf_;
+    int bins_;
+    BuildContext context_;
+};
+
+// References per chunk of a node split on the team.
+inline constexpr std::size_t kBuildChunkSize = 16384;
+
+} // namespace raylab

@@ -1,0 +1,47 @@
+#pragma once
+// The threads of one BVH build (internal to core): started once per build, they run the build's
+// parallel loops, so a loop costs a wake-up rather than a thread start. Nothing the loops
+// compute may depend on which thread ran which index: that is how the build stays the same
+// whatever the thread count.
+
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace raylab {
+
+class BuildTeam {
+public:
+    // `threads` threads in all, the caller of forEach included (at least 1).
+    explicit BuildTeam(int threads);
+    ~BuildTeam(); // stops and joins the helpers
+    BuildTeam(const BuildTeam&) = delete;
+    BuildTeam& operator=(const BuildTeam&) = delete;
+
+    int size() const { return static_cast<int>(helpers_.size()) + 1; }
+
+    // Runs job(i) once for every i in [0, count), indices handed out in increasing order to
+    // whichever thread asks first; returns when all are done. Not reentrant: a job must not call
+    // forEach.
+    void forEach(std::size_t count, const std::function<void(std::size_t)>& job);
+
+private:
+    void helperLoop();
+    void work(); // takes indices of the current loop until none is left
+
+    std::mutex mutex_;
+    std::condition_variable wake_;     // a new loop, or stop
+    std::condition_variable finished_; // the last index of the loop is done
+    const std::function<void(std::size_t)>* job_ = nullptr;
+    std::size_t count_ = 0;
+    std::size_t next_ = 0; // next index to hand out
+    std::size_t done_ = 0; // indices finished
+    unsigned long generation_ = 0;
+    bool stop_ = false;
+    std::vector<std::thread> helpers_;
+};
+
+} // namespace raylab

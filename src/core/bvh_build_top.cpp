@@ -1,0 +1,133 @@
+// The top of the tree (SubtreeBuilder::buildTop): one node at a time, each node's references
+// binned and distributed to its children by chunks on the whole team.
+
+#include "bvh_build_subtree.h"
+
+#include <algorithm>
+
+namespace raylab {
+
+namespace {
+
+// Chunk i of references [first, first + count).
+const PrimRecord* chunkBegin(const PrimRecord* first, uint32_t count, std::size_t i) {
+    return first + std::min<std::size_t>(count, i * kBuildChunkSize);
+}
+
+const PrimRecord* chunkEnd(const PrimRecord* first, uint32_t count, std::size_t i) {
+    return first + std::min<std::size_t>(count, (i + 1) * kBuildChunkSize);
+}
+
+} // namespace
+
+void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std::size_t deferBelow,
+                              std::vector<BuildTask>& deferred,
+                              std::deque<RecordVector>& arrays) const {
+    std::vector<BuildTask> stack{root};
+    BinSet scratch;
+    std::vector<BinSet> chunkBins;
+    while (!stack.empty()) {
+        const BuildTask task = stack.back();
+        stack.pop_back();
+        const uint32_t count = task.count;
+        if (count <= deferBelow && count > static_cast<uint32_t>(maxLeaf_)) {
+            deferred.push_back(task);
+            continue;
+        }
+        const Aabb box = task.bounds.box.toAabb();
+        out.nodes[task.slot].lower = box.lower;
+        out.nodes[task.slot].upper = box.upper;
+        const SplitChoice choice = choose(task.first, count, task.bounds, task.depth,
+                                          task.splitBudget, &team, scratch, chunkBins);
+        const std::size_t chunks = (count + kBuildChunkSize - 1) / kBuildChunkSize;
+        BuildTask left, right;
+        SplitKind kind = choice.kind;
+        if (kind == SplitKind::Spatial) {
+            std::vector<RecordVector> lefts(chunks), rights(chunks);
+            std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
+            team.forEach(chunks, [&](std::size_t i) {
+                applySpatialSplit(*context_.scene, chunkBegin(task.first, count, i),
+                                  chunkEnd(task.first, count, i), choice.spatial, context_.slack,
+                                  lefts[i], rights[i], leftBounds[i], rightBounds[i]);
+            });
+            std::size_t leftSize = 0, rightSize = 0;
+            for (std::size_t i = 0; i < chunks; ++i) {
+                leftSize += lefts[i].size();
+                rightSize += rights[i].size();
+            }
+            if (leftSize > 0 && rightSize > 0 && leftSize + rightSize - count <= task.splitBudget) {
+                // Both children in one new array, left first, with as much spare room.
+                RecordVector& both = arrays.emplace_back();
+                both.reserve(leftSize + rightSize);
+                for (std::size_t i = 0; i < chunks; ++i) {
+                    both.insert(both.end(), lefts[i].begin(), lefts[i].end());
+                    left.bounds.merge(leftBounds[i]);
+                }
+                for (std::size_t i = 0; i < chunks; ++i) {
+                    both.insert(both.end(), rights[i].begin(), rights[i].end());
+                    right.bounds.merge(rightBounds[i]);
+                }
+                RecordVector& spare = arrays.emplace_back();
+                spare.resize(both.size());
+                left.first = both.data();
+                left.spare = spare.data();
+                left.count = static_cast<uint32_t>(leftSize);
+                right.first = both.data() + leftSize;
+                right.spare = spare.data() + leftSize;
+                right.count = static_cast<uint32_t>(rightSize);
+            } else {
+                kind = choice.fallback;
+            }
+        }
+        if (kind == SplitKind::Object) {
+            // Each chunk's references go to their places in the spare room (offsets from the
+            // chunks' bins), in the order of the parent; the parent's room becomes the spare.
+            std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
+            std::size_t l = 0, r = choice.object.leftCount;
+            for (std::size_t i = 0; i < chunks; ++i) {
+                leftAt[i] = l;
+                rightAt[i] = r;
+                const uint32_t n = chunks == 1 ? choice.object.leftCount
+                                               : leftCountOf(chunkBins[i], choice.object);
+                l += n;
+                r += static_cast<std::size_t>(chunkEnd(task.first, count, i) -
+                                              chunkBegin(task.first, count, i)) -
+                     n;
+            }
+            std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
+            team.forEach(chunks, [&](std::size_t i) {
+                partitionRecords(chunkBegin(task.first, count, i), chunkEnd(task.first, count, i),
+                                 choice.object, bins_, task.spare + leftAt[i],
+                                 task.spare + rightAt[i], leftBounds[i], rightBounds[i]);
+            });
+            for (std::size_t i = 0; i < chunks; ++i) {
+                left.bounds.merge(leftBounds[i]);
+                right.bounds.merge(rightBounds[i]);
+            }
+            left.first = task.spare;
+            left.spare = task.first;
+            left.count = choice.object.leftCount;
+            right.first = task.spare + left.count;
+            right.spare = task.first + left.count;
+            right.count = count - left.count;
+        } else if (kind == SplitKind::Median) {
+            medianOrder(task.first, count, task.bounds);
+            left.first = task.first;
+            left.spare = task.spare;
+            left.count = count / 2;
+            right.first = task.first + left.count;
+            right.spare = task.spare + left.count;
+            right.count = count - left.count;
+            left.bounds = boundsOf(left.first, left.first + left.count);
+            right.bounds = boundsOf(right.first, right.first + right.count);
+        } else if (kind == SplitKind::Leaf) {
+            out.nodes[task.slot].index = static_cast<uint32_t>(out.records.size());
+            out.nodes[task.slot].count = count;
+            out.records.insert(out.records.end(), task.first, task.first + count);
+            continue;
+        }
+        splitIntoChildren(task, left, right, out, stack);
+    }
+}
+
+} // namespace raylab

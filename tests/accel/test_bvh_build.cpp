@@ -1,0 +1,212 @@
+// The parallel build (core/bvh_build.cpp): the same bytes whatever the thread count, with the
+// top of the tree split by chunks on several threads (large nodes, spatial splits and
+// pre-splits included), the same answers as brute force, and its parts: the build's thread
+// team and the SSE clipping of triangles at a plane.
+
+#include "accel_check.h"
+#include "accel_scenes.h"
+#include "core/bvh_build_clip.h"
+#include "core/bvh_build_team.h"
+#include "core/bvh_clip.h"
+
+#include <atomic>
+#include <cstring>
+#include <gtest/gtest.h>
+#include <random>
+#include <vector>
+
+namespace raylab::accel_test {
+namespace {
+
+// Small triangles among large slanted quads that cross the whole scene: big enough for nodes
+// split by chunks (more than 16,384 references) and for spatial splits near the root.
+Scene makeCluttered(int smallCount, uint32_t seed) {
+    Scene scene = makeTriangleSoup(smallCount, 0.03f, seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    for (int i = 0; i < 60; ++i) {
+        const glm::vec3 a{unit(rng), unit(rng), unit(rng)};
+        const glm::vec3 b{-a.x, unit(rng), -a.z};
+        const glm::vec3 c{unit(rng), -a.y, unit(rng)};
+        scene.triangles.push_back({a, b, c, 0});
+    }
+    return scene;
+}
+
+void expectSameBytes(const Bvh& a, const Bvh& b) {
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)), 0);
+    ASSERT_EQ(a.wideNodes.size(), b.wideNodes.size());
+    for (std::size_t i = 0; i < a.wideNodes.size(); ++i) { // the data, not the padding
+        const BvhWideNode &x = a.wideNodes[i], &y = b.wideNodes[i];
+        ASSERT_EQ(std::memcmp(x.lower, y.lower, sizeof(x.lower)), 0) << i;
+        ASSERT_EQ(std::memcmp(x.upper, y.upper, sizeof(x.upper)), 0) << i;
+        ASSERT_EQ(std::memcmp(x.child, y.child, sizeof(x.child)), 0) << i;
+    }
+    ASSERT_EQ(a.triangleBlocks.size(), b.triangleBlocks.size());
+    EXPECT_EQ(std::memcmp(a.triangleBlocks.data(), b.triangleBlocks.data(),
+                          a.triangleBlocks.size() * sizeof(BvhTriangleBlock)),
+              0);
+    ASSERT_EQ(a.triangles.size(), b.triangles.size());
+    EXPECT_EQ(std::memcmp(a.triangles.data(), b.triangles.data(),
+                          a.triangles.size() * sizeof(BvhTriangle)),
+              0);
+    EXPECT_EQ(a.leafReferences, b.leafReferences);
+    EXPECT_EQ(a.skippedTriangles, b.skippedTriangles);
+}
+
+TEST(BvhBuild, SameBytesForAnyThreadCount) {
+    const Scene scene = makeCluttered(90000, 3);
+    BvhBuildOptions options;
+    options.threads = 1;
+    const Bvh one = buildBvh(scene, options);
+    EXPECT_GT(one.leafReferences, scene.triangles.size()); // pre-splits or spatial splits
+    for (const int threads : {2, 3, 8}) {
+        options.threads = threads;
+        SCOPED_TRACE(threads);
+        expectSameBytes(one, buildBvh(scene, options));
+    }
+}
+
+TEST(BvhBuild, SameBytesForAnyThreadCountInTheScalarForm) {
+    const Scene scene = makeCluttered(40000, 4);
+    BvhBuildOptions options;
+    options.simd = false;
+    options.threads = 1;
+    const Bvh one = buildBvh(scene, options);
+    ASSERT_TRUE(one.wideNodes.empty());
+    options.threads = 4;
+    expectSameBytes(one, buildBvh(scene, options));
+}
+
+TEST(BvhBuild, SameBytesForAnyThreadCountWithoutSplits) {
+    const Scene scene = makeTriangleSoup(70000, 0.02f, 5);
+    BvhBuildOptions options;
+    options.presplitBudget = 0.0f;
+    options.spatialSplitBudget = 0.0f;
+    options.threads = 1;
+    const Bvh one = buildBvh(scene, options);
+    EXPECT_EQ(one.leafReferences, scene.triangles.size());
+    options.threads = 2;
+    expectSameBytes(one, buildBvh(scene, options));
+}
+
+TEST(BvhBuild, ParallelBuildMatchesBruteForce) {
+    const Scene scene = makeCluttered(60000, 6);
+    BvhBuildOptions options;
+    options.threads = 3;
+    const Bvh bvh = buildBvh(scene, options);
+    EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(1500, 7)), 300);
+    expectMatchesBruteForce(scene, bvh, makeAxisAlignedRays(500, 1.5f, 8));
+}
+
+TEST(BvhBuild, EveryLeafReferenceOnceAndBoxesNested) {
+    const Scene scene = makeCluttered(50000, 9);
+    BvhBuildOptions options;
+    options.simd = false;
+    options.threads = 2;
+    const Bvh bvh = buildBvh(scene, options);
+    std::vector<int> seen(bvh.leafReferences, 0);
+    for (const BvhNode& node : bvh.nodes) {
+        if (node.isLeaf()) {
+            for (uint32_t i = node.index; i < node.index + node.count; ++i) {
+                ASSERT_LT(i, seen.size());
+                ++seen[i];
+            }
+            continue;
+        }
+        for (const uint32_t c : {node.index, node.index + 1}) {
+            ASSERT_LT(c, bvh.nodes.size());
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_LE(node.lower[a], bvh.nodes[c].lower[a]);
+                EXPECT_GE(node.upper[a], bvh.nodes[c].upper[a]);
+            }
+        }
+    }
+    for (const int n : seen) {
+        ASSERT_EQ(n, 1);
+    }
+}
+
+TEST(BuildTeam, RunsEveryIndexExactlyOnce) {
+    for (const int threads : {1, 2, 5}) {
+        BuildTeam team(threads);
+        EXPECT_EQ(team.size(), threads);
+        for (const std::size_t count : {0u, 1u, 2u, 7u, 1000u, 3u}) {
+            std::vector<std::atomic<int>> runs(count);
+            team.forEach(count, [&](std::size_t i) { runs[i].fetch_add(1); });
+            for (std::size_t i = 0; i < count; ++i) {
+                ASSERT_EQ(runs[i].load(), 1) << "threads " << threads << " count " << count;
+            }
+        }
+    }
+}
+
+// The scalar splitBox as it was before the SSE form: the reference for splitBoxSse.
+void splitBoxReference(const Triangle& t, const Aabb& box, int axis, float position, float slack,
+                       Aabb& left, Aabb& right) {
+    const glm::vec3 v[3] = {t.v0, t.v1, t.v2};
+    left = Aabb{};
+    right = Aabb{};
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec3& p = v[i];
+        const glm::vec3& q = v[(i + 1) % 3];
+        if (p[axis] <= position) {
+            left.extend(p);
+        }
+        if (p[axis] >= position) {
+            right.extend(p);
+        }
+        if ((p[axis] < position && q[axis] > position) ||
+            (p[axis] > position && q[axis] < position)) {
+            glm::vec3 x = p + (position - p[axis]) / (q[axis] - p[axis]) * (q - p);
+            x[axis] = position;
+            left.extend(x);
+            right.extend(x);
+        }
+    }
+    for (Aabb* b : {&left, &right}) {
+        if (b->empty()) {
+            continue;
+        }
+        b->lower = glm::max(b->lower - glm::vec3(slack), box.lower);
+        b->upper = glm::min(b->upper + glm::vec3(slack), box.upper);
+    }
+    left.upper[axis] = std::min(left.upper[axis], position);
+    right.lower[axis] = std::max(right.lower[axis], position);
+}
+
+TEST(BvhBuild, SseClippingGivesTheScalarBoxesBitForBit) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    int crossing = 0;
+    for (int n = 0; n < 20000; ++n) {
+        Triangle t{{unit(rng), unit(rng), unit(rng)},
+                   {unit(rng), unit(rng), unit(rng)},
+                   {unit(rng), unit(rng), unit(rng)},
+                   0};
+        if (n % 7 == 0) {
+            t.v1.y = t.v0.y; // an edge on an axis plane
+        }
+        Aabb box;
+        box.extend(t.v0);
+        box.extend(t.v1);
+        box.extend(t.v2);
+        if (n % 3 == 0) { // a part of the triangle's box, as spatial splits clip it
+            box.lower.x = std::max(box.lower.x, unit(rng) * 0.5f);
+        }
+        const int axis = n % 3;
+        const float position = n % 11 == 0 ? t.v0[axis] : unit(rng);
+        const float slack = n % 2 == 0 ? 0.0f : 1e-6f;
+        Aabb expectedLeft, expectedRight, left, right;
+        splitBoxReference(t, box, axis, position, slack, expectedLeft, expectedRight);
+        splitBox(t, box, axis, position, slack, left, right);
+        ASSERT_EQ(std::memcmp(&left, &expectedLeft, sizeof(Aabb)), 0) << n;
+        ASSERT_EQ(std::memcmp(&right, &expectedRight, sizeof(Aabb)), 0) << n;
+        crossing += !left.empty() && !right.empty() ? 1 : 0;
+    }
+    EXPECT_GT(crossing, 2000);
+}
+
+} // namespace
+} // namespace raylab::accel_test
