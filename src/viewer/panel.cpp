@@ -142,34 +142,29 @@ void displaySection(RenderSettings& edit, PanelState& state) {
 }
 
 void statisticsSection(const PanelView& view) {
-    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen) ||
+        view.numbers == nullptr) {
         return;
     }
+    const PanelNumbers& n = *view.numbers;
     // Frames are drawn only when something changed, so the rate is that of the redraws.
-    const float frameMs = view.frameMs ? view.frameMs->mean() : 0.0f;
-    const float drawMs = view.drawMs ? view.drawMs->mean() : 0.0f;
+    const float frameMs = n.frameMs.mean();
     ImGui::Text("window %.0f redraws/s, %.1f ms each; upload %.2f ms",
                 frameMs > 0.0f ? 1000.0 / static_cast<double>(frameMs) : 0.0,
-                static_cast<double>(drawMs), view.uploadMs);
-    if (view.shown != nullptr && view.shown->image.width > 0) {
-        const ShownImage& s = *view.shown;
-        ImGui::Text("%d x %d, %d samples%s, %zu triangles", s.image.width, s.image.height,
-                    s.preview ? 0 : s.settings.samplesPerPixel,
-                    s.preview ? " (preview)" : (s.final ? " (cap)" : ""), view.triangles);
-        ImGui::Text("pass %.1f ms, %.2f Mrays/s", s.passSeconds * 1000.0, s.raysPerSecond * 1e-6);
+                static_cast<double>(n.drawMs.mean()), n.uploadMs);
+    if (const PictureFacts& p = n.picture; p.width > 0) {
+        ImGui::Text("%d x %d, %d samples%s, %zu triangles", p.width, p.height, p.samples,
+                    p.preview ? " (preview)" : (p.final ? " (cap)" : ""), view.triangles);
+        ImGui::Text("pass %.1f ms, %.2f Mrays/s", p.passMs, p.raysPerSecond * 1e-6);
     }
     const float half = halfWidth();
-    if (view.passMs != nullptr) {
-        ImGui::PlotLines("##pass", view.passMs->data(), view.passMs->size(), view.passMs->offset(),
-                         "pass ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
-    }
-    if (view.drawMs != nullptr) {
-        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-        ImGui::PlotLines("##draw", view.drawMs->data(), view.drawMs->size(), view.drawMs->offset(),
-                         "draw ms", 0.0f, FLT_MAX, ImVec2(half, 32.0f));
-        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-        ImGui::TextUnformatted("times");
-    }
+    ImGui::PlotLines("##pass", n.passMs.data(), n.passMs.size(), n.passMs.offset(), "pass ms", 0.0f,
+                     FLT_MAX, ImVec2(half, 32.0f));
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::PlotLines("##draw", n.drawMs.data(), n.drawMs.size(), n.drawMs.offset(), "draw ms", 0.0f,
+                     FLT_MAX, ImVec2(half, 32.0f));
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("times");
 }
 
 // The path field and its Open button, on one row at a fixed place (scripts click the field),

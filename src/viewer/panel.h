@@ -4,8 +4,7 @@
 // click it. Widgets edit a copy of the settings that is accepted only when valid (settings_edit.h).
 
 #include "core/render_settings.h"
-#include "history.h"
-#include "shown_image.h"
+#include "panel_numbers.h"
 
 #include <cstddef>
 #include <string>
@@ -28,16 +27,14 @@ struct PanelState {
 
 // What the panel shows but does not edit.
 struct PanelView {
-    const ShownImage* shown = nullptr; // the picture on screen (may be empty)
     std::string sceneName;
     std::size_t triangles = 0;
-    bool loading = false;             // a scene is being loaded in the background
-    float step = 0.1f;                // navigationStep of the scene: drag speeds
-    float maxEpsilon = 0.1f;          // the right end of the epsilon slider
-    const History* frameMs = nullptr; // intervals between frames drawn (ms)
-    const History* drawMs = nullptr;  // the UI thread's time to draw a frame (ms)
-    const History* passMs = nullptr;  // render pass times
-    double uploadMs = 0.0;
+    bool loading = false;    // a scene is being loaded in the background
+    float step = 0.1f;       // navigationStep of the scene: drag speeds
+    float maxEpsilon = 0.1f; // the right end of the epsilon slider
+    // The statistics shown: a copy refreshed a few times a second (PanelNumbersRefresh), so that
+    // an untouched panel draws the same pixels from frame to frame. Null: none shown.
+    const PanelNumbers* numbers = nullptr;
 };
 
 struct PanelActions {

@@ -34,9 +34,9 @@ void PanelContext::beginFrame() {
     ImGui::NewFrame();
 }
 
-void PanelContext::endFrame() {
+ImDrawData& PanelContext::endFrame() {
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return *ImGui::GetDrawData();
 }
 
 } // namespace raylab::viewer

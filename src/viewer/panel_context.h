@@ -4,6 +4,7 @@
 // reverse.
 
 struct GLFWwindow;
+struct ImDrawData;
 
 namespace raylab::viewer {
 
@@ -18,8 +19,9 @@ public:
 
     bool ok() const { return ok_; }
     void beginFrame();
-    // Builds the draw data of the frame and draws it over what the framebuffer holds.
-    void endFrame();
+    // Builds the draw data of the frame; draw it with PanelCache::draw (or ImGui's renderer).
+    // Valid until the next beginFrame.
+    ImDrawData& endFrame();
 
 private:
     bool platformReady_ = false;

@@ -12,12 +12,13 @@
 #define GLFW_INCLUDE_NONE
 #include "core/scene_framing.h"
 #include "gl_window.h"
-#include "history.h"
 #include "image_quad.h"
 #include "input.h"
 #include "key_relay.h"
 #include "panel.h"
+#include "panel_cache.h"
 #include "panel_context.h"
+#include "panel_numbers.h"
 #include "redraw_schedule.h"
 #include "render_worker.h"
 #include "run_stats.h"
@@ -108,7 +109,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     input.attach(window.handle()); // before ImGui, whose callbacks chain to these
     PanelContext gui(window.handle());
     ImageQuad quad;
-    if (!gui.ok() || !quad.create(error)) {
+    PanelCache panelCache;
+    if (!gui.ok() || !quad.create(error) || !panelCache.create(error)) {
         std::fprintf(stderr, "raylab: %s\n", gui.ok() ? error.c_str() : "cannot start Dear ImGui");
         return 1;
     }
@@ -130,7 +132,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     ShownImage shown;
     RenderJob submitted;
     uint64_t submittedSerial = 0;
-    History frameMs(120), drawMs(120), passMs(120);
+    PanelNumbers numbers;             // live: every frame and picture
+    PanelNumbersRefresh panelNumbers; // what the panel shows: a copy, refreshed every 0.25 s
     int framesShown = 0;
     int screenshots = 0;
     bool quit = false;
@@ -225,24 +228,29 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             quad.upload(shown.image);
             stats.uploads.add(quad.lastUploadSeconds());
             if (shown.passSeconds > 0.0) {
-                passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
+                numbers.passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
             }
+            numbers.uploadMs = quad.lastUploadSeconds() * 1000.0;
+            numbers.picture = {shown.image.width,
+                               shown.image.height,
+                               shown.preview ? 0 : shown.settings.samplesPerPixel,
+                               shown.preview,
+                               shown.final,
+                               shown.passSeconds * 1000.0,
+                               shown.raysPerSecond};
             pictureToUpload = false;
         }
         applyInput(input.take(), window.handle(), step, fbHeight, drag, panel, showPanel,
                    screenshots, quit);
         if (showPanel) {
+            panelNumbers.update(numbers, wokeAt);
             PanelView view;
-            view.shown = &shown;
             view.sceneName = scene->source;
             view.triangles = scene->scene.triangles.size();
             view.loading = loader.busy();
             view.step = step;
             view.maxEpsilon = maxEpsilon;
-            view.frameMs = &frameMs;
-            view.drawMs = &drawMs;
-            view.passMs = &passMs;
-            view.uploadMs = quad.lastUploadSeconds() * 1000.0;
+            view.numbers = &panelNumbers.shown();
             const PanelActions actions = drawPanel(panel, view);
             screenshots += actions.screenshot ? 1 : 0;
             if (actions.frameScene) {
@@ -286,7 +294,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             }
             screenshots = 0;
         }
-        gui.endFrame();
+        panelCache.draw(gui.endFrame(), fbWidth, fbHeight);
         keys.frameEnded();
         if (finalFrame && !options.readback.empty()) {
             if (!writePng(options.readback, readFramebuffer(fbWidth, fbHeight), error)) {
@@ -301,8 +309,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         const auto now = Clock::now();
         const double interval = secondsBetween(previousFrameTime, now);
         const double response = schedule.frameShown(now);
-        frameMs.push(static_cast<float>(interval * 1000.0));
-        drawMs.push(static_cast<float>(secondsBetween(wokeAt, now) * 1000.0));
+        numbers.frameMs.push(static_cast<float>(interval * 1000.0));
+        numbers.drawMs.push(static_cast<float>(secondsBetween(wokeAt, now) * 1000.0));
         stats.drawTimes.add(secondsBetween(wokeAt, now));
         previousFrameTime = now;
         if (stats.framesShown++ > 0) { // the first swap starts the clock
@@ -317,6 +325,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         // frame; an active text field blinks its cursor.
         if (ImGui::IsAnyMouseDown()) {
             schedule.want(now);
+        }
+        // The panel shows the last picture's numbers once their refresh comes, even when
+        // nothing else is drawn then.
+        if (const auto catchUp = panelNumbers.catchUpAt(numbers); showPanel && catchUp) {
+            schedule.wantAt(*catchUp);
         }
         if (ImGui::GetIO().WantTextInput) {
             schedule.wantAt(now + std::chrono::duration_cast<Clock::duration>(

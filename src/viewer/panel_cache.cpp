@@ -1,0 +1,187 @@
+#include "panel_cache.h"
+
+#include <algorithm>
+#include <glad/gl.h>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+namespace raylab::viewer {
+
+namespace {
+
+// Two triangles that cover the viewport exactly (llvmpipe draws such a rectangle on its fast
+// path), with the texture coordinates of uRect at its corners.
+const char* const kVertexShader = R"(#version 330 core
+const vec2 kCorners[6] = vec2[6](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 1.0),
+                                 vec2(0.0, 0.0), vec2(1.0, 1.0), vec2(0.0, 1.0));
+uniform vec4 uRect; // the viewport in texture coordinates: x0, y0, x1, y1
+out vec2 texCoord;
+void main() {
+    vec2 corner = kCorners[gl_VertexID];
+    texCoord = mix(uRect.xy, uRect.zw, corner);
+    gl_Position = vec4(2.0 * corner - 1.0, 0.0, 1.0);
+}
+)";
+
+// The texture has the framebuffer's size and orientation: texel = window pixel, 1:1.
+const char* const kFragmentShader = R"(#version 330 core
+uniform sampler2D uPanel;
+in vec2 texCoord;
+out vec4 fragColor;
+void main() { fragColor = texture(uPanel, texCoord); }
+)";
+
+GLuint compile(GLenum stage, const char* source, std::string& error) {
+    const GLuint shader = glCreateShader(stage);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[1024] = {};
+        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+        error = std::string("the panel's compositing shader does not compile: ") + log;
+        std::replace(error.begin(), error.end(), '\n', ' ');
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+// Sets the scissor to a rectangle given with rows from the top, in a framebuffer of `height`.
+void scissorTo(const PixelRect& r, int height) {
+    glScissor(r.x0, height - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+}
+
+} // namespace
+
+PanelCache::~PanelCache() {
+    if (framebuffer_ != 0) {
+        glDeleteFramebuffers(1, &framebuffer_);
+    }
+    if (texture_ != 0) {
+        glDeleteTextures(1, &texture_);
+    }
+    if (vertexArray_ != 0) {
+        glDeleteVertexArrays(1, &vertexArray_);
+    }
+    if (program_ != 0) {
+        glDeleteProgram(program_);
+    }
+}
+
+bool PanelCache::create(std::string& error) {
+    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader, error);
+    const GLuint fragment = vertex == 0 ? 0 : compile(GL_FRAGMENT_SHADER, kFragmentShader, error);
+    if (fragment == 0) {
+        if (vertex != 0) {
+            glDeleteShader(vertex);
+        }
+        return false;
+    }
+    program_ = glCreateProgram();
+    glAttachShader(program_, vertex);
+    glAttachShader(program_, fragment);
+    glLinkProgram(program_);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        error = "the panel's compositing shader does not link";
+        return false;
+    }
+    glUseProgram(program_);
+    glUniform1i(glGetUniformLocation(program_, "uPanel"), 0);
+    rectLocation_ = glGetUniformLocation(program_, "uRect");
+    glUseProgram(0);
+    glGenVertexArrays(1, &vertexArray_);
+    glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &framebuffer_);
+    return true;
+}
+
+bool PanelCache::fitTexture(int width, int height) {
+    if (width == width_ && height == height_) {
+        return complete_;
+    }
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    width_ = width;
+    height_ = height;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
+    complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    if (complete_) {
+        glDisable(GL_SCISSOR_TEST);
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    valid_ = false;
+    last_ = PanelSignature{};
+    return complete_;
+}
+
+void PanelCache::draw(ImDrawData& data, int framebufferWidth, int framebufferHeight) {
+    if (framebufferWidth <= 0 || framebufferHeight <= 0) {
+        return;
+    }
+    ++framesDrawn_;
+    if (!fitTexture(framebufferWidth, framebufferHeight)) {
+        ImGui_ImplOpenGL3_RenderDrawData(&data); // no cache: draw directly
+        ++rerenders_;
+        return;
+    }
+    const PanelSignature signature = panelSignature(data);
+    if (!valid_ || signature != last_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        // Only what the last panel covered can hold pixels: clear that, then draw the new one.
+        const PixelRect stale = last_.bounds;
+        if (!stale.empty()) {
+            glEnable(GL_SCISSOR_TEST);
+            scissorTo(stale, framebufferHeight);
+            glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glDisable(GL_SCISSOR_TEST);
+        }
+        ImGui_ImplOpenGL3_RenderDrawData(&data);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        last_ = signature;
+        valid_ = true;
+        ++rerenders_;
+    }
+    const PixelRect& r = last_.bounds;
+    if (!r.empty()) {
+        glViewport(r.x0, framebufferHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+        glDisable(GL_SCISSOR_TEST);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glUseProgram(program_);
+        const float w = static_cast<float>(framebufferWidth),
+                    h = static_cast<float>(framebufferHeight);
+        glUniform4f(rectLocation_, static_cast<float>(r.x0) / w,
+                    static_cast<float>(framebufferHeight - r.y1) / h, static_cast<float>(r.x1) / w,
+                    static_cast<float>(framebufferHeight - r.y0) / h);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glBindVertexArray(vertexArray_);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+        glBindVertexArray(0);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glUseProgram(0);
+        glDisable(GL_BLEND);
+    }
+    glViewport(0, 0, framebufferWidth, framebufferHeight);
+}
+
+} // namespace raylab::viewer

@@ -1,0 +1,126 @@
+// panelSignature on the real panel's draw data, built by Dear ImGui without a window or GL: the
+// same panel gives the same signature; a hover, an edited value, a new number or another display
+// size change it; the bounds hold the panel and nothing far from it.
+
+#include "panel.h"
+#include "panel_signature.h"
+
+#include <cfloat>
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+namespace raylab::viewer {
+namespace {
+
+// A Dear ImGui context with its font atlas built, as a renderer backend would (no GL needed to
+// build draw data).
+class HeadlessImGui {
+public:
+    HeadlessImGui() {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.LogFilename = nullptr;
+        io.DisplaySize = ImVec2(1280.0f, 720.0f);
+        io.DeltaTime = 1.0f / 60.0f;
+        unsigned char* pixels = nullptr;
+        int width = 0, height = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+        io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(1)));
+        ImGui::StyleColorsDark();
+    }
+    HeadlessImGui(const HeadlessImGui&) = delete;
+    HeadlessImGui& operator=(const HeadlessImGui&) = delete;
+    ~HeadlessImGui() { ImGui::DestroyContext(); }
+};
+
+// Draws one frame of the panel and returns its signature.
+PanelSignature panelFrame(PanelState& state, const PanelView& view) {
+    ImGui::NewFrame();
+    drawPanel(state, view);
+    ImGui::Render();
+    return panelSignature(*ImGui::GetDrawData());
+}
+
+// A few frames, as the viewer draws after an event (ImGui settles: hover, auto-resize).
+PanelSignature settled(PanelState& state, const PanelView& view) {
+    PanelSignature last;
+    for (int i = 0; i < 4; ++i) {
+        last = panelFrame(state, view);
+    }
+    return last;
+}
+
+TEST(ViewerPanelSignature, SamePanelSameSignatureAndChangesShow) {
+    HeadlessImGui imgui;
+    PanelState state;
+    state.scenePath = "cornell";
+    PanelNumbers numbers;
+    numbers.picture = {1280, 720, 16, false, false, 40.0, 2.5e7};
+    PanelView view;
+    view.sceneName = "cornell";
+    view.triangles = 30;
+    view.numbers = &numbers;
+    ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // no mouse over the window
+
+    const PanelSignature first = settled(state, view);
+    EXPECT_EQ(panelFrame(state, view), first) << "an unchanged panel changed its draw data";
+    EXPECT_EQ(panelFrame(state, view), first);
+
+    // Bounds: the panel's place and width (kPanelX, kPanelY, kPanelWidth), nothing far beyond.
+    const PixelRect& b = first.bounds;
+    EXPECT_FALSE(b.empty());
+    EXPECT_LE(b.x0, static_cast<int>(kPanelX));
+    EXPECT_LE(b.y0, static_cast<int>(kPanelY));
+    EXPECT_GE(b.x0, static_cast<int>(kPanelX) - 4);
+    EXPECT_GE(b.x1, static_cast<int>(kPanelX + kPanelWidth));
+    EXPECT_LE(b.x1, static_cast<int>(kPanelX + kPanelWidth) + 4);
+    EXPECT_GT(b.y1, 200);
+    EXPECT_LT(b.y1, 720);
+
+    // The mouse over the screenshot button highlights it (the viewer re-renders in that frame).
+    ImGui::GetIO().MousePos = ImVec2(100.0f, 44.0f);
+    const PanelSignature hovered = panelFrame(state, view);
+    EXPECT_NE(hovered.hash, first.hash);
+    EXPECT_EQ(settled(state, view), hovered);
+    ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    EXPECT_EQ(settled(state, view), first);
+
+    // An edited value (as a key or the mouse would change it) and a new number show.
+    state.settings.light.intensity += 1.0f;
+    const PanelSignature edited = panelFrame(state, view);
+    EXPECT_NE(edited.hash, first.hash);
+    numbers.picture.samples = 17;
+    EXPECT_NE(panelFrame(state, view).hash, edited.hash);
+    numbers.drawMs.push(3.0f);
+    const PanelSignature plotted = panelFrame(state, view);
+    EXPECT_NE(plotted.hash, edited.hash);
+    EXPECT_EQ(panelFrame(state, view), plotted);
+
+    // Another display size: another signature, even where the panel looks the same.
+    ImGui::GetIO().DisplaySize = ImVec2(1000.0f, 720.0f);
+    EXPECT_NE(settled(state, view).hash, plotted.hash);
+}
+
+TEST(ViewerPanelSignature, NothingDrawnHasEmptyBounds) {
+    HeadlessImGui imgui;
+    ImGui::NewFrame();
+    ImGui::Render();
+    const PanelSignature none = panelSignature(*ImGui::GetDrawData());
+    EXPECT_TRUE(none.bounds.empty());
+    ImGui::NewFrame();
+    ImGui::Render();
+    EXPECT_EQ(panelSignature(*ImGui::GetDrawData()), none);
+}
+
+TEST(ViewerPanelSignature, UniteIgnoresEmptyRectangles) {
+    const PixelRect a{1, 2, 5, 6}, b{3, 0, 9, 4}, empty{};
+    EXPECT_EQ(unite(a, b), (PixelRect{1, 0, 9, 6}));
+    EXPECT_EQ(unite(a, empty), a);
+    EXPECT_EQ(unite(empty, b), b);
+    EXPECT_TRUE(unite(empty, empty).empty());
+}
+
+} // namespace
+} // namespace raylab::viewer
