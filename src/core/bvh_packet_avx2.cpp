@@ -153,7 +153,9 @@ RAYLAB_AVX2 inline void keepCloser(PacketBest& best, const LaneHits& h, unsigned
                                        _mm256_castps_si256(mask));
 }
 
-// The lanes of `lanes` that found a triangle, written into hits (the others keep what they hold).
+// Every lane of hits: best's hit for the lanes of `lanes` that found a triangle, Hit{} for the
+// others. Whole-register stores: hits is read back as registers (shadeLab8), and a register load
+// of data just written lane by lane would stall on store forwarding.
 RAYLAB_AVX2 inline void writeBest(const PacketBest& best, unsigned lanes, HitPacket& hits) {
     const __m256i bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
     const __m256i found = _mm256_andnot_si256(
@@ -161,14 +163,15 @@ RAYLAB_AVX2 inline void writeBest(const PacketBest& best, unsigned lanes, HitPac
         _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(lanes)), bits),
                            bits));
     const __m256 write = _mm256_castsi256_ps(found);
-    _mm256_store_ps(hits.t, _mm256_blendv_ps(_mm256_load_ps(hits.t), best.t, write));
+    const Hit none;
+    _mm256_store_ps(hits.t, _mm256_blendv_ps(_mm256_set1_ps(none.t), best.t, write));
     _mm256_store_ps(
-        hits.u, _mm256_blendv_ps(_mm256_load_ps(hits.u), _mm256_div_ps(best.e1, best.det), write));
+        hits.u, _mm256_blendv_ps(_mm256_set1_ps(none.u), _mm256_div_ps(best.e1, best.det), write));
     _mm256_store_ps(
-        hits.v, _mm256_blendv_ps(_mm256_load_ps(hits.v), _mm256_div_ps(best.e2, best.det), write));
-    __m256i* triangle = reinterpret_cast<__m256i*>(hits.triangle);
-    _mm256_store_si256(triangle,
-                       _mm256_blendv_epi8(_mm256_load_si256(triangle), best.triangle, found));
+        hits.v, _mm256_blendv_ps(_mm256_set1_ps(none.v), _mm256_div_ps(best.e2, best.det), write));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(hits.triangle),
+                       _mm256_blendv_epi8(_mm256_set1_epi32(static_cast<int>(none.triangle)),
+                                          best.triangle, found));
 }
 
 // Tests lane l's exact-fallback triangle and keeps it when closer.
@@ -206,9 +209,9 @@ RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& bloc
 RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
     PacketRays p;
     makePacket(rays, p);
-    hits.clear();
     const unsigned lanes = p.lanes;
     if (lanes == 0) {
+        hits.clear();
         return p.others;
     }
     PacketBest best{_mm256_set1_ps(kInfinity), _mm256_setzero_ps(), _mm256_setzero_ps(),

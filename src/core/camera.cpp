@@ -18,14 +18,22 @@ constexpr float kMaxLookAtPitchDegrees = 89.9f;
 // forward * focal per component, then glm::normalize's v * (1 / sqrt((x*x + y*y) + z*z)).
 RAYLAB_AVX2 void through8Avx2(const PrimaryRays& p, const float* px, const float* py, int count,
                               RayPacket& rays) {
-    float xs[8] = {};
-    float ys[8] = {};
-    for (int i = 0; i < count; ++i) {
-        xs[i] = px[i];
-        ys[i] = py[i];
+    __m256 x, y;
+    if (count == 8) { // loaded as the caller stored them (no store-forwarding stall)
+        x = _mm256_loadu_ps(px);
+        y = _mm256_loadu_ps(py);
+    } else {
+        alignas(32) float xs[8] = {};
+        alignas(32) float ys[8] = {};
+        for (int i = 0; i < count; ++i) {
+            xs[i] = px[i];
+            ys[i] = py[i];
+        }
+        x = _mm256_load_ps(xs);
+        y = _mm256_load_ps(ys);
     }
-    const __m256 a = _mm256_sub_ps(_mm256_loadu_ps(xs), _mm256_set1_ps(p.halfWidth));
-    const __m256 b = _mm256_sub_ps(_mm256_set1_ps(p.halfHeight), _mm256_loadu_ps(ys));
+    const __m256 a = _mm256_sub_ps(x, _mm256_set1_ps(p.halfWidth));
+    const __m256 b = _mm256_sub_ps(_mm256_set1_ps(p.halfHeight), y);
     __m256 v[3];
     for (int k = 0; k < 3; ++k) {
         v[k] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(p.right[k]), a),

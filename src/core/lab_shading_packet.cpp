@@ -22,6 +22,13 @@ static_assert(sizeof(Triangle) == 10 * sizeof(float) && offsetof(Triangle, v1) =
 
 constexpr float kFourPi = 12.566370614359172f; // as lab_shading.cpp
 
+// Set bits of a lane mask (the POPCNT instruction where there is AVX2, not a libgcc call).
+RAYLAB_AVX2 int laneCountAvx2(unsigned lanes) { return __builtin_popcount(lanes); }
+int laneCount(unsigned lanes) {
+    static const bool simd = bvhSimdSupported();
+    return simd ? laneCountAvx2(lanes) : __builtin_popcount(lanes);
+}
+
 void shadeLanesScalar(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                       const RayPacket& rays, const HitPacket& hits, RadiancePacket& radiance,
                       RayCounts& counts) {
@@ -44,7 +51,7 @@ void shadeLanesScalar(const Scene& scene, const Bvh& bvh, const RenderSettings& 
         }
     }
     const unsigned occluded = anyHit8(bvh, shadowRays);
-    counts.shadow += static_cast<std::uint64_t>(__builtin_popcount(shadowRays.lanes));
+    counts.shadow += static_cast<std::uint64_t>(laneCount(shadowRays.lanes));
     for (int i = 0; i < kPacketSize; ++i) {
         glm::vec3 value(0.0f);
         if ((hitLanes >> i) & 1u) {
@@ -106,15 +113,19 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
     // Lanes without a hit read the first hit lane's triangle; their results are masked out.
     const Triangle* triangles = scene.triangles.data();
     const float* rows[kPacketSize];
-    alignas(32) float rho[3][kPacketSize];
+    const glm::vec3* diffuse[kPacketSize];
     const uint32_t fallback = hits.triangle[__builtin_ctz(hitLanes)];
     for (int i = 0; i < kPacketSize; ++i) {
         const Triangle& tri = triangles[(hitLanes >> i) & 1u ? hits.triangle[i] : fallback];
         rows[i] = &tri.v0.x;
-        const glm::vec3& diffuse = scene.materials[tri.material].diffuse;
-        rho[0][i] = diffuse.x;
-        rho[1][i] = diffuse.y;
-        rho[2][i] = diffuse.z;
+        diffuse[i] = &scene.materials[tri.material].diffuse;
+    }
+    // Built in registers, not stored lane by lane and reloaded (a store-forwarding stall).
+    __m256 rho[3];
+    for (int k = 0; k < 3; ++k) {
+        rho[k] =
+            _mm256_setr_ps((*diffuse[0])[k], (*diffuse[1])[k], (*diffuse[2])[k], (*diffuse[3])[k],
+                           (*diffuse[4])[k], (*diffuse[5])[k], (*diffuse[6])[k], (*diffuse[7])[k]);
     }
     __m256 v0[3], v1[3], v2[3];
     loadVectors(rows, 0, v0);
@@ -184,8 +195,8 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
     const glm::vec3 indirect = settings.indirect3();
     for (int k = 0; k < 3; ++k) {
         const __m256 direct = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(power[k]), scale), keep);
-        const __m256 value = _mm256_mul_ps(_mm256_load_ps(rho[k]),
-                                           _mm256_add_ps(direct, _mm256_set1_ps(indirect[k])));
+        const __m256 value =
+            _mm256_mul_ps(rho[k], _mm256_add_ps(direct, _mm256_set1_ps(indirect[k])));
         _mm256_store_ps(radiance.value[k], _mm256_and_ps(value, foundMask));
     }
 }
@@ -196,7 +207,7 @@ void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& setting
                const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts) {
     HitPacket hits;
     closestHit8(bvh, rays, hits);
-    counts.primary += static_cast<std::uint64_t>(__builtin_popcount(rays.lanes));
+    counts.primary += static_cast<std::uint64_t>(laneCount(rays.lanes));
     static const bool simd = bvhSimdSupported();
     if (simd) {
         shadeLanesAvx2(scene, bvh, settings, rays, hits, radiance, counts);
