@@ -178,7 +178,7 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
     unsigned litLanes = static_cast<unsigned>(_mm256_movemask_ps(lit)) & hitLanes;
     if (settings.shadows && litLanes != 0) {
         // The shadow rays of the lit lanes, in their own lanes: eps < t < |r| - eps.
-        RayPacket shadowRays;
+        RayPacket shadowRays{RayPacket::Unset{}}; // every field is stored below
         for (int k = 0; k < 3; ++k) {
             _mm256_store_ps(shadowRays.origin[k], point[k]);
             _mm256_store_ps(shadowRays.direction[k], toLight[k]);

@@ -13,11 +13,18 @@ namespace raylab {
 inline constexpr int kPacketSize = 8;
 
 struct alignas(32) RayPacket {
-    float origin[3][kPacketSize]{};    // [axis][lane]
-    float direction[3][kPacketSize]{}; // [axis][lane]
-    float tMin[kPacketSize]{};
-    float tMax[kPacketSize]{};
+    float origin[3][kPacketSize];    // [axis][lane]
+    float direction[3][kPacketSize]; // [axis][lane]
+    float tMin[kPacketSize];
+    float tMax[kPacketSize];
     unsigned lanes = 0; // bit i set: lane i holds a ray; the other lanes are never read back
+
+    // No rays, every field zero.
+    RayPacket() : origin{}, direction{}, tMin{}, tMax{} {}
+    // No rays, the fields left unset: for code that stores every field of every lane next (a
+    // packet on the stack of a hot loop need not be zeroed first).
+    struct Unset {};
+    explicit RayPacket(Unset) {}
 
     Ray ray(int i) const {
         return Ray{{origin[0][i], origin[1][i], origin[2][i]},
