@@ -114,7 +114,7 @@ uint64_t RenderWorker::submit(const RenderJob& job) {
     uint64_t serial = 0;
     {
         std::lock_guard lock(mutex_);
-        if (!samePicture(job, job_) && !inPreview_) {
+        if (!samePicture(job, job_) && !inPreview_ && !inShortFirstPass_) {
             cancel_.store(true);
         }
         job_ = job;
@@ -166,6 +166,10 @@ void RenderWorker::run() {
         std::lock_guard lock(mutex_);
         inPreview_ = running;
     };
+    const auto setInShortFirstPass = [&](bool running) {
+        std::lock_guard lock(mutex_);
+        inShortFirstPass_ = running;
+    };
     // Counts a pass (or preview) that took `seconds`, or was cancelled when `seconds` is < 0.
     const auto tally = [&](Tally PassTotals::*which, double seconds) {
         std::lock_guard lock(mutex_);
@@ -198,6 +202,11 @@ void RenderWorker::run() {
                 samples = 0;
                 previewTried = false;
             }
+            // Decided with the job, under the same lock, so no submit slips in between. A pass
+            // of unknown cost (none measured yet) counts as too long.
+            const double expected = secondsPerPixel * static_cast<double>(pixelCount(job.settings));
+            inShortFirstPass_ =
+                samples == 0 && secondsPerPixel > 0.0 && expected <= previewBudgetSeconds_;
         }
         const RenderSettings& settings = job.settings;
         const LoadedScene& loaded = *job.scene;
@@ -252,7 +261,10 @@ void RenderWorker::run() {
             PassOptions full = pass;
             full.displayRgba = staging.image.pixels;
             const auto start = Clock::now();
-            if (!accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, full)) {
+            const bool complete =
+                accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, full);
+            setInShortFirstPass(false);
+            if (!complete) {
                 sums.clear(); // partly updated: worthless, whatever the next job is
                 tally(&PassTotals::passes, -1.0);
                 continue;

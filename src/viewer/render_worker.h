@@ -10,6 +10,9 @@
 // replication) so that moving the camera stays fluid; the picture sharpens when the camera stops.
 // A preview in flight is not cancelled by a new job (it takes about one budget): it is shown, and
 // the newest job starts after it, so a camera that keeps moving still gets a picture per preview.
+// For the same reason a new picture's first full pass is not cancelled when the last passes show
+// it fits the budget: while the camera moves faster than passes finish, every pass still ends in
+// a picture (at most one budget late) instead of being thrown away for the next step.
 //
 // Threads: accumulatePass runs settings.threads workers and this thread is one of them.
 
@@ -58,7 +61,7 @@ public:
     ~RenderWorker();
 
     // Replaces the job; returns its serial (1, 2, ...). Cancels the pass in flight when the
-    // picture changes.
+    // picture changes, unless it is a preview or a first pass that fits the budget (above).
     uint64_t submit(const RenderJob& job);
 
     // Moves the newest published picture into `out` when it is newer than out.serial (the buffer
@@ -75,12 +78,13 @@ private:
     const std::function<void()> onPicture_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
-    RenderJob job_;          // guarded by mutex_
-    uint64_t jobSerial_ = 0; // guarded by mutex_
-    bool quit_ = false;      // guarded by mutex_
-    bool inPreview_ = false; // guarded by mutex_: a preview pass is running
-    ShownImage latest_;      // guarded by mutex_
-    PassTotals totals_;      // guarded by mutex_
+    RenderJob job_;                 // guarded by mutex_
+    uint64_t jobSerial_ = 0;        // guarded by mutex_
+    bool quit_ = false;             // guarded by mutex_
+    bool inPreview_ = false;        // guarded by mutex_: a preview pass is running
+    bool inShortFirstPass_ = false; // guarded by mutex_: a first pass that fits the budget runs
+    ShownImage latest_;             // guarded by mutex_
+    PassTotals totals_;             // guarded by mutex_
     std::atomic<bool> cancel_{false};
     std::thread thread_; // last: starts after every member above exists
 };

@@ -148,6 +148,47 @@ TEST(ViewerRenderWorker, PreviewWhenPassesAreSlow) {
     EXPECT_EQ(shown.image.pixels, reference(*box, settings));
 }
 
+// A camera that moves faster than passes finish: first passes that fit the budget are not
+// thrown away for the next step, each ends in a picture, and the last step's picture is exact.
+TEST(ViewerRenderWorker, ShortFirstPassesFinishWhileTheCameraMoves) {
+    const auto box = labBox();
+    RenderWorker worker(10.0); // every measured pass fits
+    RenderSettings settings = smallSettings(1);
+    waitFinal(worker, worker.submit({box, settings})); // measures a pass
+    uint64_t serial = 0;
+    for (int step = 1; step <= 50; ++step) {
+        settings.camera.yawDegrees = 0.5f * static_cast<float>(step);
+        serial = worker.submit({box, settings});
+        std::this_thread::sleep_for(std::chrono::microseconds(300));
+    }
+    const ShownImage last = waitFinal(worker, serial);
+    EXPECT_EQ(last.image.pixels, reference(*box, settings));
+    const PassTotals totals = worker.totals();
+    EXPECT_EQ(totals.cancelled, 0u);
+    EXPECT_EQ(totals.previews.count, 0u);
+    EXPECT_GE(totals.passes.count, 2u);
+}
+
+// Passes that do not fit the budget are still cancelled by a new picture.
+TEST(ViewerRenderWorker, LongPassesAreCancelledByANewPicture) {
+    const auto box = labBox();
+    RenderWorker worker(1e-9); // no pass fits: previews first, full passes cancellable
+    RenderSettings settings = smallSettings(1);
+    settings.width = 640;
+    settings.height = 480;
+    settings.threads = 1;
+    waitFinal(worker, worker.submit({box, settings}));
+    uint64_t serial = 0;
+    for (int step = 1; step <= 200; ++step) {
+        settings.camera.yawDegrees = 0.5f * static_cast<float>(step);
+        serial = worker.submit({box, settings});
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    const ShownImage last = waitFinal(worker, serial);
+    EXPECT_EQ(last.image.pixels, reference(*box, settings));
+    EXPECT_GT(worker.totals().cancelled, 0u);
+}
+
 TEST(ViewerSettingsEdit, RefusesNonsenseAndKeepsTheCurrentSettings) {
     RenderSettings current;
     std::string why;
