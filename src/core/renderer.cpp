@@ -30,7 +30,7 @@ void samplePoints(int x0, int y, int count, uint32_t sampleIndex, uint32_t rowSe
     }
 }
 
-// samplePoints for 8 pixels at once, the same integer hash and the same float operations.
+// hash32 (sampling.h) on 8 lanes.
 RAYLAB_AVX2 inline __m256i hash32x8(__m256i x) {
     x = _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
     x = _mm256_mullo_epi32(x, _mm256_set1_epi32(0x7feb352d));
@@ -39,11 +39,14 @@ RAYLAB_AVX2 inline __m256i hash32x8(__m256i x) {
     return _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
 }
 
+// unitFloat (sampling.h) on 8 lanes.
 RAYLAB_AVX2 inline __m256 unitFloat8(__m256i bits) {
     return _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(bits, 8)),
                          _mm256_set1_ps(0x1.0p-24f));
 }
 
+// samplePoints for 8 pixels at once: the same integer hash and the same float operations, so
+// the points are bit for bit samplePoints'.
 RAYLAB_AVX2 void samplePoints8(int x0, int y, uint32_t sampleIndex, uint32_t rowSeed, float* px,
                                float* py) {
     const __m256i x =
