@@ -1,5 +1,6 @@
 #include "image_quad.h"
 
+#include "gl_program.h"
 #include "quad_shaders.h"
 
 #include <algorithm>
@@ -8,29 +9,6 @@
 #include <utility>
 
 namespace raylab::viewer {
-
-namespace {
-
-// Compiles one shader stage; 0 with a one-line error on failure.
-GLuint compileShader(GLenum stage, const char* source, std::string& error) {
-    const GLuint shader = glCreateShader(stage);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        char log[1024] = {};
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        error = std::string(stage == GL_VERTEX_SHADER ? "quad.vert" : "quad.frag") +
-                " does not compile: " + log;
-        std::replace(error.begin(), error.end(), '\n', ' ');
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
-} // namespace
 
 ImageQuad::~ImageQuad() {
     if (framebuffer_ != 0) {
@@ -48,28 +26,8 @@ ImageQuad::~ImageQuad() {
 }
 
 bool ImageQuad::create(std::string& error) {
-    const GLuint vertex = compileShader(GL_VERTEX_SHADER, kQuadVertexShader, error);
-    if (vertex == 0) {
-        return false;
-    }
-    const GLuint fragment = compileShader(GL_FRAGMENT_SHADER, kQuadFragmentShader, error);
-    if (fragment == 0) {
-        glDeleteShader(vertex);
-        return false;
-    }
-    program_ = glCreateProgram();
-    glAttachShader(program_, vertex);
-    glAttachShader(program_, fragment);
-    glLinkProgram(program_);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        char log[1024] = {};
-        glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-        error = std::string("the quad's shaders do not link: ") + log;
-        std::replace(error.begin(), error.end(), '\n', ' ');
+    program_ = buildProgram(kQuadVertexShader, kQuadFragmentShader, "the picture's quad", error);
+    if (program_ == 0) {
         return false;
     }
     viewportSizeLocation_ = glGetUniformLocation(program_, "uViewportSize");

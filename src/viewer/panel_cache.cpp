@@ -1,6 +1,7 @@
 #include "panel_cache.h"
 
-#include <algorithm>
+#include "gl_program.h"
+
 #include <glad/gl.h>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
@@ -31,23 +32,6 @@ out vec4 fragColor;
 void main() { fragColor = texture(uPanel, texCoord); }
 )";
 
-GLuint compile(GLenum stage, const char* source, std::string& error) {
-    const GLuint shader = glCreateShader(stage);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        char log[1024] = {};
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        error = std::string("the panel's compositing shader does not compile: ") + log;
-        std::replace(error.begin(), error.end(), '\n', ' ');
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
 // Sets the scissor to a rectangle given with rows from the top, in a framebuffer of `height`.
 void scissorTo(const PixelRect& r, int height) {
     glScissor(r.x0, height - r.y1, r.x1 - r.x0, r.y1 - r.y0);
@@ -71,24 +55,9 @@ PanelCache::~PanelCache() {
 }
 
 bool PanelCache::create(std::string& error) {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader, error);
-    const GLuint fragment = vertex == 0 ? 0 : compile(GL_FRAGMENT_SHADER, kFragmentShader, error);
-    if (fragment == 0) {
-        if (vertex != 0) {
-            glDeleteShader(vertex);
-        }
-        return false;
-    }
-    program_ = glCreateProgram();
-    glAttachShader(program_, vertex);
-    glAttachShader(program_, fragment);
-    glLinkProgram(program_);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        error = "the panel's compositing shader does not link";
+    program_ =
+        buildProgram(kVertexShader, kFragmentShader, "the panel's compositing shader", error);
+    if (program_ == 0) {
         return false;
     }
     glUseProgram(program_);
