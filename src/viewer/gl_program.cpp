@@ -65,4 +65,21 @@ unsigned buildProgram(const char* vertexSource, const char* fragmentSource, cons
     return program;
 }
 
+void deleteGlObjects(unsigned program, unsigned vertexArray, unsigned texture,
+                     unsigned framebuffer) {
+    // No GL call at all for 0 names: the context (or glad) may not exist when nothing was made.
+    if (framebuffer != 0) {
+        glDeleteFramebuffers(1, &framebuffer);
+    }
+    if (texture != 0) {
+        glDeleteTextures(1, &texture);
+    }
+    if (vertexArray != 0) {
+        glDeleteVertexArrays(1, &vertexArray);
+    }
+    if (program != 0) {
+        glDeleteProgram(program);
+    }
+}
+
 } // namespace raylab::viewer

@@ -12,4 +12,8 @@ namespace raylab::viewer {
 unsigned buildProgram(const char* vertexSource, const char* fragmentSource, const std::string& what,
                       std::string& error);
 
+// Deletes a drawing's GL objects; a 0 name is skipped without calling GL.
+void deleteGlObjects(unsigned program, unsigned vertexArray, unsigned texture,
+                     unsigned framebuffer);
+
 } // namespace raylab::viewer

@@ -10,20 +10,7 @@
 
 namespace raylab::viewer {
 
-ImageQuad::~ImageQuad() {
-    if (framebuffer_ != 0) {
-        glDeleteFramebuffers(1, &framebuffer_);
-    }
-    if (texture_ != 0) {
-        glDeleteTextures(1, &texture_);
-    }
-    if (vertexArray_ != 0) {
-        glDeleteVertexArrays(1, &vertexArray_);
-    }
-    if (program_ != 0) {
-        glDeleteProgram(program_);
-    }
-}
+ImageQuad::~ImageQuad() { deleteGlObjects(program_, vertexArray_, texture_, framebuffer_); }
 
 bool ImageQuad::create(std::string& error) {
     program_ = buildProgram(kQuadVertexShader, kQuadFragmentShader, "the picture's quad", error);

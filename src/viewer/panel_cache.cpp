@@ -39,20 +39,7 @@ void scissorTo(const PixelRect& r, int height) {
 
 } // namespace
 
-PanelCache::~PanelCache() {
-    if (framebuffer_ != 0) {
-        glDeleteFramebuffers(1, &framebuffer_);
-    }
-    if (texture_ != 0) {
-        glDeleteTextures(1, &texture_);
-    }
-    if (vertexArray_ != 0) {
-        glDeleteVertexArrays(1, &vertexArray_);
-    }
-    if (program_ != 0) {
-        glDeleteProgram(program_);
-    }
-}
+PanelCache::~PanelCache() { deleteGlObjects(program_, vertexArray_, texture_, framebuffer_); }
 
 bool PanelCache::create(std::string& error) {
     program_ =
