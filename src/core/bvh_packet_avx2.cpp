@@ -121,6 +121,17 @@ RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const PacketRays& p,
     return n;
 }
 
+// Goes on with the last of a node's n > 0 hit children (the nearest, when they are sorted) and
+// its lanes, and pushes the others on the stack.
+RAYLAB_AVX2 inline void descend(const PacketEntry* children, int n, PacketEntry* stack, int& size,
+                                uint32_t& ref, unsigned& active) {
+    for (int i = 0; i < n - 1; ++i) {
+        stack[size++] = children[i];
+    }
+    ref = children[n - 1].ref;
+    active = children[n - 1].lanes;
+}
+
 // The closest hit per lane so far: (t, triangle) decides; u and v are held as e1 and e2 until
 // divided by det at the end (det = 1 for hits from intersectTriangle, whose u, v are final).
 struct PacketBest {
@@ -227,11 +238,7 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, Hit
             PacketEntry children[kWideLanes];
             const int n = hitChildren<true>(bvh.wideNodes[ref], p, limit, active, children);
             if (n > 0) {
-                for (int i = 0; i < n - 1; ++i) {
-                    stack[size++] = children[i];
-                }
-                ref = children[n - 1].ref;
-                active = children[n - 1].lanes;
+                descend(children, n, stack, size, ref, active);
                 continue;
             }
         } else {
@@ -289,11 +296,7 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigne
             PacketEntry children[kWideLanes];
             const int n = hitChildren<false>(bvh.wideNodes[ref], p, p.tMax, active, children);
             if (n > 0) {
-                for (int i = 0; i < n - 1; ++i) {
-                    stack[size++] = children[i];
-                }
-                ref = children[n - 1].ref;
-                active = children[n - 1].lanes;
+                descend(children, n, stack, size, ref, active);
                 continue;
             }
         } else {
