@@ -9,7 +9,8 @@
 
 namespace raylab {
 
-// Closest hits of the lanes of rays.lanes; every other lane of hits gets Hit{}.
+// Closest hits of the lanes of rays.lanes; every other lane of hits gets Hit{}. Every lane is
+// written, whatever hits held.
 void closestHit8(const Bvh& bvh, const RayPacket& rays, HitPacket& hits);
 
 // The lanes of rays.lanes whose ray hits a triangle (bit i: lane i).

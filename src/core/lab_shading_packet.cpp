@@ -205,7 +205,7 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
 
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts) {
-    HitPacket hits;
+    HitPacket hits{RayPacket::Unset{}};
     closestHit8(bvh, rays, hits);
     counts.primary += static_cast<std::uint64_t>(laneCount(rays.lanes));
     static const bool simd = bvhSimdSupported();

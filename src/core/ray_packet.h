@@ -51,6 +51,8 @@ struct alignas(32) HitPacket {
     uint32_t triangle[kPacketSize];
 
     HitPacket() { clear(); }
+    // The lanes left unset: for a packet that closestHit8 fills next (it writes every lane).
+    explicit HitPacket(RayPacket::Unset) {}
     void clear() {
         for (int i = 0; i < kPacketSize; ++i) {
             set(i, Hit{});
