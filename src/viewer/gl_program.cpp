@@ -65,6 +65,16 @@ unsigned buildProgram(const char* vertexSource, const char* fragmentSource, cons
     return program;
 }
 
+void drawTexturedTriangles(unsigned vertexArray, unsigned texture) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glBindVertexArray(vertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(0);
+}
+
 void deleteGlObjects(unsigned program, unsigned vertexArray, unsigned texture,
                      unsigned framebuffer) {
     // No GL call at all for 0 names: the context (or glad) may not exist when nothing was made.

@@ -12,6 +12,10 @@ namespace raylab::viewer {
 unsigned buildProgram(const char* vertexSource, const char* fragmentSource, const std::string& what,
                       std::string& error);
 
+// Draws the 6 vertices of vertexArray (two triangles made by the vertex shader) with the bound
+// program, `texture` on unit 0; leaves the vertex array, texture and program unbound.
+void drawTexturedTriangles(unsigned vertexArray, unsigned texture);
+
 // Deletes a drawing's GL objects; a 0 name is skipped without calling GL.
 void deleteGlObjects(unsigned program, unsigned vertexArray, unsigned texture,
                      unsigned framebuffer);

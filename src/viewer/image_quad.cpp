@@ -84,13 +84,7 @@ void ImageQuad::draw(int framebufferWidth, int framebufferHeight) const {
     glUseProgram(program_);
     glUniform2i(viewportSizeLocation_, framebufferWidth, framebufferHeight);
     glUniform1i(imageLocation_, 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glBindVertexArray(vertexArray_);
-    glDrawArrays(GL_TRIANGLES, 0, 6);
-    glBindVertexArray(0);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glUseProgram(0);
+    drawTexturedTriangles(vertexArray_, texture_);
 }
 
 Rgba8Image readFramebuffer(int framebufferWidth, int framebufferHeight) {

@@ -128,13 +128,7 @@ void PanelCache::draw(ImDrawData& data, int framebufferWidth, int framebufferHei
         glUniform4f(rectLocation_, static_cast<float>(r.x0) / w,
                     static_cast<float>(framebufferHeight - r.y1) / h, static_cast<float>(r.x1) / w,
                     static_cast<float>(framebufferHeight - r.y0) / h);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, texture_);
-        glBindVertexArray(vertexArray_);
-        glDrawArrays(GL_TRIANGLES, 0, 6);
-        glBindVertexArray(0);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glUseProgram(0);
+        drawTexturedTriangles(vertexArray_, texture_);
         glDisable(GL_BLEND);
     }
     glViewport(0, 0, framebufferWidth, framebufferHeight);
