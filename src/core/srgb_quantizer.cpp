@@ -1,5 +1,6 @@
 #include "srgb_quantizer.h"
 
+#include <cassert>
 #include <cmath>
 #include <cstring>
 
@@ -56,15 +57,22 @@ SrgbQuantizer::SrgbQuantizer() {
         }
         firstOf_[b] = floatOf(hi);
     }
-    bucketStart_.resize((one >> kBucketShift) + 1);
+    buckets_.resize(kBuckets);
     unsigned byte = 0;
-    for (uint32_t k = 0; k < bucketStart_.size(); ++k) {
-        const float start = floatOf(k << kBucketShift);
-        while (byte < 255 && start >= firstOf_[byte + 1]) {
+    for (uint32_t k = 0; k < kBuckets; ++k) {
+        const uint32_t start = k << kBucketShift;
+        while (byte < 255 && floatOf(start) >= firstOf_[byte + 1]) {
             ++byte;
         }
-        bucketStart_[k] = static_cast<uint8_t>(byte);
+        uint32_t step = kLowBits + 1;
+        if (byte < 255 && bitsOf(firstOf_[byte + 1]) >> kBucketShift == k) {
+            step = bitsOf(firstOf_[byte + 1]) & kLowBits;
+            // At most one step per bucket: the next one starts in a later bucket.
+            assert(byte == 254 || bitsOf(firstOf_[byte + 2]) >> kBucketShift > k);
+        }
+        buckets_[k] = (byte << 16) | step;
     }
+    assert(buckets_[kBuckets - 1] >> 16 == 255); // 1.0f's bucket
 }
 
 const SrgbQuantizer& srgbQuantizer() {

@@ -29,7 +29,7 @@ public:
         }
         uint32_t bits;
         __builtin_memcpy(&bits, &linear, sizeof bits);
-        unsigned byte = bucketStart_[bits >> kBucketShift];
+        unsigned byte = buckets_[bits >> kBucketShift] >> 16;
         while (byte < 255 && linear >= firstOf_[byte + 1]) {
             ++byte;
         }
@@ -39,10 +39,22 @@ public:
     // The smallest float whose byte is b (b >= 1).
     float firstOf(int b) const { return firstOf_[b]; }
 
-private:
+    // Bucket k holds the floats whose bits >> kBucketShift are k; buckets 0 to kBuckets - 1 cover
+    // [0, 1], the last one holding 1.0f.
     static constexpr int kBucketShift = 15; // buckets of 2^15 floats: 8 mantissa bits kept
+    static constexpr uint32_t kLowBits = (1u << kBucketShift) - 1;
+    static constexpr uint32_t kBuckets = (0x3f800000u >> kBucketShift) + 1;
+
+    // One 32-bit entry per bucket, for SIMD code: bits 16-23 are the byte of the bucket's first
+    // float; bits 0-15 are the low bits (bits & kLowBits) of firstOf(that byte + 1) when that
+    // float lies in the bucket, otherwise kLowBits + 1. A bucket holds at most one step (checked
+    // when built), so for x in [0, 1] with e = bucketTable()[bits(x) >> kBucketShift]:
+    // byte(x) = (e >> 16) + ((bits(x) & kLowBits) >= (e & 0xffff) ? 1 : 0).
+    const uint32_t* bucketTable() const { return buckets_.data(); }
+
+private:
     std::array<float, 256> firstOf_{};
-    std::vector<uint8_t> bucketStart_; // the byte of each bucket's first float in (0, 1)
+    std::vector<uint32_t> buckets_; // kBuckets entries, as bucketTable() describes
 };
 
 // The one quantizer every caller shares (built on first use, immutable afterwards).

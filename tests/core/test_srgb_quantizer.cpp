@@ -3,6 +3,7 @@
 #include "core/display_transform.h"
 #include "core/srgb_quantizer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -39,6 +40,37 @@ TEST(SrgbQuantizer, EveryStepIsWhereTheFormulaSteps) {
         EXPECT_EQ(srgbByteByFormula(before), b - 1) << "the formula skips or repeats a step";
         EXPECT_EQ(srgb(first), b);
         EXPECT_EQ(srgb(before), b - 1);
+    }
+}
+
+// bucketTable()'s contract, for every float in [0, 1]: the formula's byte rises monotonically, so
+// it holds in a whole bucket when it holds at its first and last float and around its step.
+TEST(SrgbQuantizer, TheBucketTableGivesEveryByteWithOneComparison) {
+    const uint32_t* table = srgbQuantizer().bucketTable();
+    const auto byteOf = [&](uint32_t bits) {
+        const uint32_t e = table[bits >> SrgbQuantizer::kBucketShift];
+        return (e >> 16) + ((bits & SrgbQuantizer::kLowBits) >= (e & 0xffff) ? 1u : 0u);
+    };
+    for (uint32_t k = 0; k < SrgbQuantizer::kBuckets; ++k) {
+        const uint32_t first = k << SrgbQuantizer::kBucketShift;
+        const uint32_t last = std::min(first + SrgbQuantizer::kLowBits, 0x3f800000u);
+        const uint32_t step = first + (table[k] & 0xffff);
+        ASSERT_LE(table[k] >> 16, 255u);
+        for (const uint32_t bits : {first, last, step - 1, step}) {
+            if (bits >= first && bits <= last) {
+                ASSERT_EQ(byteOf(bits), srgbByteByFormula(floatOf(bits)))
+                    << "x = " << floatOf(bits) << " in bucket " << k;
+            }
+        }
+        if (step > last) { // no step inside: the bucket is one byte
+            ASSERT_EQ(srgbByteByFormula(floatOf(first)), srgbByteByFormula(floatOf(last)))
+                << "bucket " << k;
+        } else {
+            ASSERT_EQ(srgbByteByFormula(floatOf(step - 1)), srgbByteByFormula(floatOf(first)))
+                << "bucket " << k;
+            ASSERT_EQ(srgbByteByFormula(floatOf(last)), srgbByteByFormula(floatOf(step)))
+                << "bucket " << k << " holds two steps";
+        }
     }
 }
 
