@@ -66,6 +66,12 @@ struct alignas(32) RadiancePacket {
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts);
 
+// shadeLab8 for each of rays[0, count), 0 <= count <= kPacketSize, with the same results: the
+// rays of an image block (camera rays from one origin), whose triangles and whose shadow rays'
+// blockers are found once for the block (bvh_frustum.h) where the CPU has AVX2.
+void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts);
+
 // The same for Ray records: radiance[i] for rays[0, count), 0 <= count <= kPacketSize.
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,
                int count, glm::vec3* radiance, RayCounts& counts);

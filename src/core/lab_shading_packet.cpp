@@ -7,6 +7,7 @@
 
 #include "bvh_packet.h"
 #include "lab_shading.h"
+#include "lab_shading_stages.h"
 #include "watertight_avx2.h"
 
 #include <cstddef>
@@ -94,19 +95,23 @@ RAYLAB_AVX2 inline void loadVectors(const float* const rows[8], int offset, __m2
     out[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
 }
 
-// surfaceAt, lightAt and labRadiance for 8 lanes; lanes that missed (or hold no ray) give black.
-RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+// surfaceAt, lightAt and labRadiance for 8 lanes up to the shadow test; lanes that missed (or
+// hold no ray) give black.
+RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settings,
                                 const RayPacket& rays, const HitPacket& hits,
-                                RadiancePacket& radiance, RayCounts& counts) {
+                                ShadingBeforeShadow& stage, RayPacket& shadowRays,
+                                RayCounts& counts) {
     // closestHit8 leaves kNoTriangle in the lanes without a ray or a hit.
     const __m256i triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(hits.triangle));
     const __m256 foundMask = _mm256_castsi256_ps(_mm256_xor_si256(
         _mm256_cmpeq_epi32(triangle, _mm256_set1_epi32(-1)), _mm256_set1_epi32(-1)));
     const unsigned hitLanes = static_cast<unsigned>(_mm256_movemask_ps(foundMask));
     const __m256 zero = _mm256_setzero_ps();
+    shadowRays.lanes = 0;
     if (hitLanes == 0) {
         for (int c = 0; c < 3; ++c) {
-            _mm256_store_ps(radiance.value[c], zero);
+            _mm256_store_ps(stage.lit[c], zero);
+            _mm256_store_ps(stage.dark[c], zero);
         }
         return;
     }
@@ -178,7 +183,6 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
     unsigned litLanes = static_cast<unsigned>(_mm256_movemask_ps(lit)) & hitLanes;
     if (settings.shadows && litLanes != 0) {
         // The shadow rays of the lit lanes, in their own lanes: eps < t < |r| - eps.
-        RayPacket shadowRays{RayPacket::Unset{}}; // every field is stored below
         for (int k = 0; k < 3; ++k) {
             _mm256_store_ps(shadowRays.origin[k], point[k]);
             _mm256_store_ps(shadowRays.direction[k], toLight[k]);
@@ -188,17 +192,55 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
         _mm256_store_ps(shadowRays.tMax, _mm256_sub_ps(distance, _mm256_set1_ps(epsilon)));
         shadowRays.lanes = litLanes;
         counts.shadow += static_cast<std::uint64_t>(__builtin_popcount(litLanes));
-        litLanes &= ~anyHit8(bvh, shadowRays);
     }
-    // labRadiance: R = rho * (D + N), black where nothing was hit.
+    // labRadiance: R = rho * (D + N) when lit and unshadowed, rho * (0 + N) otherwise; black
+    // where nothing was hit.
     const __m256 keep = laneMask(litLanes);
     const glm::vec3 indirect = settings.indirect3();
     for (int k = 0; k < 3; ++k) {
+        const __m256 ambient = _mm256_set1_ps(indirect[k]);
         const __m256 direct = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(power[k]), scale), keep);
-        const __m256 value =
-            _mm256_mul_ps(rho[k], _mm256_add_ps(direct, _mm256_set1_ps(indirect[k])));
-        _mm256_store_ps(radiance.value[k], _mm256_and_ps(value, foundMask));
+        _mm256_store_ps(
+            stage.lit[k],
+            _mm256_and_ps(_mm256_mul_ps(rho[k], _mm256_add_ps(direct, ambient)), foundMask));
+        _mm256_store_ps(
+            stage.dark[k],
+            _mm256_and_ps(_mm256_mul_ps(rho[k], _mm256_add_ps(zero, ambient)), foundMask));
     }
+}
+
+} // namespace
+
+RAYLAB_AVX2 void finishShadeAvx2(const ShadingBeforeShadow& stage, unsigned occluded,
+                                 RadiancePacket& radiance) {
+    const __m256 shadowed = laneMask(occluded);
+    for (int k = 0; k < 3; ++k) {
+        _mm256_store_ps(radiance.value[k],
+                        _mm256_blendv_ps(_mm256_load_ps(stage.lit[k]),
+                                         _mm256_load_ps(stage.dark[k]), shadowed));
+    }
+}
+
+void beginShade(const Scene& scene, const RenderSettings& settings, const RayPacket& rays,
+                const HitPacket& hits, ShadingBeforeShadow& stage, RayPacket& shadowRays,
+                RayCounts& counts) {
+    beginShadeAvx2(scene, settings, rays, hits, stage, shadowRays, counts);
+}
+
+void finishShade(const ShadingBeforeShadow& stage, unsigned occluded, RadiancePacket& radiance) {
+    finishShadeAvx2(stage, occluded, radiance);
+}
+
+namespace {
+
+// surfaceAt, lightAt and labRadiance for 8 lanes; lanes that missed (or hold no ray) give black.
+RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                                const RayPacket& rays, const HitPacket& hits,
+                                RadiancePacket& radiance, RayCounts& counts) {
+    ShadingBeforeShadow stage;
+    RayPacket shadowRays{RayPacket::Unset{}}; // beginShadeAvx2 stores the lanes it sets
+    beginShadeAvx2(scene, settings, rays, hits, stage, shadowRays, counts);
+    finishShadeAvx2(stage, shadowRays.lanes != 0 ? anyHit8(bvh, shadowRays) : 0u, radiance);
 }
 
 } // namespace

@@ -90,27 +90,35 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
     }
     const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
         RayCounts tileCounts;
-        // Runs of up to 8 pixels along a row, traced as one packet (shadeLab8).
-        RayPacket packet;
-        RadiancePacket radiance;
+        // Blocks of up to 8 x 8 pixels: each row of a block is one packet (shadeLabBlock).
+        RayPacket packets[kPacketSize];
+        RadiancePacket radiance[kPacketSize];
+        uint32_t rowSeeds[kPacketSize];
         float px[kPacketSize];
         float py[kPacketSize];
-        for (int y = tile.y0; y < tile.y1; ++y) {
-            // samplePixelOffset's hash with its row and sample parts hoisted out of the pixels.
-            const uint32_t rowSeed = hash32(static_cast<uint32_t>(y) ^ sampleSeed);
+        for (int y0 = tile.y0; y0 < tile.y1; y0 += kPacketSize) {
+            const int rows = std::min(kPacketSize, tile.y1 - y0);
+            for (int r = 0; r < rows; ++r) {
+                // samplePixelOffset's hash with its row and sample parts hoisted out of the pixels.
+                rowSeeds[r] = hash32(static_cast<uint32_t>(y0 + r) ^ sampleSeed);
+            }
             for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketSize) {
                 const int count = std::min(kPacketSize, tile.x1 - x0);
-                if (simd && count == kPacketSize) {
-                    samplePoints8(x0, y, sampleIndex, rowSeed, px, py);
-                } else {
-                    samplePoints(x0, y, count, sampleIndex, rowSeed, px, py);
+                for (int r = 0; r < rows; ++r) {
+                    if (simd && count == kPacketSize) {
+                        samplePoints8(x0, y0 + r, sampleIndex, rowSeeds[r], px, py);
+                    } else {
+                        samplePoints(x0, y0 + r, count, sampleIndex, rowSeeds[r], px, py);
+                    }
+                    rays.through8(px, py, count, packets[r]);
                 }
-                rays.through8(px, py, count, packet);
-                shadeLab8(scene, bvh, settings, packet, radiance, tileCounts);
-                glm::vec3* row = &sums[static_cast<std::size_t>(y) * width + x0];
-                for (int i = 0; i < count; ++i) {
-                    row[i] +=
-                        glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
+                shadeLabBlock(scene, bvh, settings, packets, rows, radiance, tileCounts);
+                for (int r = 0; r < rows; ++r) {
+                    glm::vec3* row = &sums[static_cast<std::size_t>(y0 + r) * width + x0];
+                    for (int i = 0; i < count; ++i) {
+                        row[i] += glm::vec3(radiance[r].value[0][i], radiance[r].value[1][i],
+                                            radiance[r].value[2][i]);
+                    }
                 }
             }
         }

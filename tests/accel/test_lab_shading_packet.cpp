@@ -90,5 +90,60 @@ TEST(LabShadingPacket, LaneMasksWithGaps) {
     EXPECT_GT(lit, 500);
 }
 
+// shadeLabBlock (a block's packets traced together through frustum candidates) against
+// shadeLab8 packet by packet: blocks of 1 to 8 rows, rows of 1 to 8 lanes, lanes with gaps,
+// with and without shadows, for the box (every block culled) and a soup (some blocks too full).
+void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings) {
+    const Bvh bvh = buildBvh(scene);
+    const PrimaryRays primary(settings.camera, settings.width, settings.height);
+    int lit = 0;
+    unsigned pattern = 0;
+    for (int y0 = 0; y0 < settings.height; y0 += kPacketSize) {
+        for (int x0 = 0; x0 < settings.width; x0 += kPacketSize) {
+            ++pattern;
+            const int rows = 1 + static_cast<int>(pattern % kPacketSize);
+            RayPacket packets[kPacketSize];
+            for (int r = 0; r < rows; ++r) {
+                for (int i = 0; i < kPacketSize; ++i) {
+                    packets[r].set(i, primary.through(static_cast<float>(x0 + i) + 0.25f,
+                                                      static_cast<float>(y0 + r) + 0.75f));
+                }
+                // Full rows mostly; now and then a partial row or a mask with gaps.
+                packets[r].lanes = (pattern + static_cast<unsigned>(r)) % 5 == 0
+                                       ? (pattern * 37u + static_cast<unsigned>(r)) & 0xffu
+                                       : 0xffu;
+            }
+            RadiancePacket block[kPacketSize], single[kPacketSize];
+            RayCounts blockCounts, singleCounts;
+            shadeLabBlock(scene, bvh, settings, packets, rows, block, blockCounts);
+            for (int r = 0; r < rows; ++r) {
+                shadeLab8(scene, bvh, settings, packets[r], single[r], singleCounts);
+                ASSERT_EQ(std::memcmp(&block[r], &single[r], sizeof(RadiancePacket)), 0)
+                    << "block " << x0 << ", " << y0 << " row " << r;
+                for (int i = 0; i < kPacketSize; ++i) {
+                    lit += block[r].value[0][i] > 0.0f ? 1 : 0;
+                }
+            }
+            ASSERT_EQ(blockCounts.primary, singleCounts.primary);
+            ASSERT_EQ(blockCounts.shadow, singleCounts.shadow);
+        }
+    }
+    EXPECT_GT(lit, settings.width * settings.height / 4);
+}
+
+TEST(LabShadingPacket, BlocksEqualPackets) {
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 72;
+    expectBlockShadingEqualsPackets(makeCornellBox(), settings);
+    settings.shadowEpsilon = 0.0f;
+    expectBlockShadingEqualsPackets(makeCornellBox(), settings);
+    settings.shadows = false;
+    expectBlockShadingEqualsPackets(makeCornellBox(), settings);
+    settings.shadows = true;
+    settings.light.position = {0.5f, 2.0f, -1.5f};
+    expectBlockShadingEqualsPackets(makeTriangleSoup(5000, 0.1f, 31), settings);
+}
+
 } // namespace
 } // namespace raylab::accel_test

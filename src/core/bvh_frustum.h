@@ -1,0 +1,66 @@
+#pragma once
+// Frustum culling for a group of coherent packets: the camera rays of an 8 x 8 pixel block, or
+// their shadow rays towards one point light. A pyramid that holds every ray of the group is
+// walked through the 8-wide BVH once, keeping the triangles that may lie inside it; each packet
+// then tests just those triangles, with no traversal of its own. When the pyramid holds more
+// than kMaxFrustumCandidates triangles (a finely tessellated mesh seen from afar), the caller
+// traces the packets as usual (bvh_packet.h).
+//
+// Exactness: the pyramid's planes are pushed outwards by `tolerance`, a distance far above the
+// rounding of the triangle test and of the ray arithmetic, so every triangle that the packet
+// traversal could find for some ray of the group is a candidate. Candidates are tested with the
+// packet traversal's own triangle test and (t, triangle index) rule, so each lane's answer is
+// closestHit8's or anyHit8's bit for bit.
+
+#include "bvh.h"
+#include "ray_packet.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+
+namespace raylab {
+
+inline constexpr int kMaxFrustumPlanes = 5;
+inline constexpr int kMaxFrustumCandidates = 32;
+
+// The region where dot(normal[j], p - apex) + offset[j] >= -tolerance for every plane j
+// (normals of unit length, distances in world units).
+struct RayFrustum {
+    glm::vec3 apex{0.0f};
+    int planeCount = 0;
+    glm::vec3 normal[kMaxFrustumPlanes]{};
+    float offset[kMaxFrustumPlanes]{};
+    float tolerance = 0.0f;
+};
+
+// Leaf triangles of the 8-wide BVH: triangle lane[i] of bvh.triangleBlocks[block[i]].
+struct FrustumCandidates {
+    int count = 0;
+    uint32_t block[kMaxFrustumCandidates];
+    uint8_t lane[kMaxFrustumCandidates];
+};
+
+// A pyramid holding every ray (tMin < t) of packets[0, count), which must share one origin, the
+// pyramid's apex. False when there is none of use: the origins differ, a direction is not finite
+// or lies more than about 78 degrees from the group's mean direction, the BVH has no 8-wide form
+// or the CPU no AVX2.
+bool frustumOfRays(const Bvh& bvh, const RayPacket* packets, int count, RayFrustum& frustum);
+
+// A pyramid with its apex at `end` holding the segment from each ray's origin to `end`, for rays
+// that run from their origin towards `end` and stop before it (tMax at most the distance to
+// `end`: shadow rays towards a point light). False as for frustumOfRays.
+bool frustumOfSegments(const Bvh& bvh, const RayPacket* packets, int count, const glm::vec3& end,
+                       RayFrustum& frustum);
+
+// The leaf triangles that may lie in the frustum (a superset of those that do). False when there
+// are more than kMaxFrustumCandidates; `candidates` is then incomplete.
+bool frustumCandidates(const Bvh& bvh, const RayFrustum& frustum, FrustumCandidates& candidates);
+
+// closestHit8(bvh, rays, hits) and anyHit8(bvh, rays), exactly, for rays that lie in the frustum
+// the candidates were collected for.
+void closestHitCandidates(const Bvh& bvh, const FrustumCandidates& candidates,
+                          const RayPacket& rays, HitPacket& hits);
+unsigned anyHitCandidates(const Bvh& bvh, const FrustumCandidates& candidates,
+                          const RayPacket& rays);
+
+} // namespace raylab

@@ -1,0 +1,71 @@
+// shadeLabBlock: the packets of an image block share one frustum walk for their camera rays and
+// one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles are
+// traced one by one through the BVH. Either way each lane's radiance is shadeLab8's.
+
+#include "bvh_frustum.h"
+#include "bvh_packet.h"
+#include "lab_shading.h"
+#include "lab_shading_stages.h"
+
+#include <array>
+#include <utility>
+
+namespace raylab {
+
+namespace {
+
+// Packets whose every lane is written before it is read: not zeroed first (RayPacket::Unset).
+template <typename Packet, std::size_t... I>
+std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
+    return {((void)I, Packet(RayPacket::Unset{}))...};
+}
+
+} // namespace
+
+void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts) {
+    static const bool simd = bvhSimdSupported();
+    if (!simd || bvh.wideNodes.empty()) {
+        for (int k = 0; k < count; ++k) {
+            shadeLab8(scene, bvh, settings, rays[k], radiance[k], counts);
+        }
+        return;
+    }
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    const bool cameraCandidates =
+        frustumOfRays(bvh, rays, count, frustum) && frustumCandidates(bvh, frustum, candidates);
+    auto hits = unsetPackets<HitPacket>(std::make_index_sequence<kPacketSize>());
+    for (int k = 0; k < count; ++k) {
+        if (cameraCandidates) {
+            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
+        } else {
+            closestHit8(bvh, rays[k], hits[k]);
+        }
+        counts.primary += static_cast<std::uint64_t>(__builtin_popcount(rays[k].lanes));
+    }
+
+    ShadingBeforeShadow stages[kPacketSize];
+    auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
+    bool anyShadowRay = false;
+    for (int k = 0; k < count; ++k) {
+        beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
+        anyShadowRay = anyShadowRay || shadowRays[k].lanes != 0;
+    }
+    // Shadow rays run from their hit point towards the light and stop short of it (tMin =
+    // epsilon >= 0, tMax = |r| - epsilon): segments ending at the light.
+    const bool shadowCandidates =
+        anyShadowRay && settings.shadowEpsilon >= 0.0f &&
+        frustumOfSegments(bvh, shadowRays.data(), count, settings.light.position, frustum) &&
+        frustumCandidates(bvh, frustum, candidates);
+    for (int k = 0; k < count; ++k) {
+        unsigned occluded = 0;
+        if (shadowRays[k].lanes != 0) {
+            occluded = shadowCandidates ? anyHitCandidates(bvh, candidates, shadowRays[k])
+                                        : anyHit8(bvh, shadowRays[k]);
+        }
+        finishShade(stages[k], occluded, radiance[k]);
+    }
+}
+
+} // namespace raylab

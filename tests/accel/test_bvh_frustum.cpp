@@ -1,0 +1,360 @@
+// Frustum culling (bvh_frustum.h): for blocks of 8 x 8 camera rays and their shadow rays, the
+// candidate triangles give every lane closestHit8's and anyHit8's answer bit for bit, and the
+// frustum is refused where its contract does not hold.
+
+#include "accel_check.h"
+#include "accel_scenes.h"
+#include "core/bvh_frustum.h"
+#include "core/bvh_packet.h"
+#include "core/camera.h"
+#include "core/cornell_box.h"
+#include "core/render_settings.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace raylab::accel_test {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+struct Block {
+    RayPacket packets[kPacketSize];
+    int count = 0;
+};
+
+// The camera rays of pixels [x0, x0 + 8) x [y0, y0 + 8) (clipped to the image), through random
+// points of each pixel, its corners included.
+Block cameraBlock(const PrimaryRays& primary, int width, int height, int x0, int y0,
+                  std::mt19937& random) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_int_distribution<int> pick(0, 5);
+    Block block;
+    block.count = std::min(kPacketSize, height - y0);
+    for (int r = 0; r < block.count; ++r) {
+        RayPacket& packet = block.packets[r];
+        for (int i = 0; i < kPacketSize && x0 + i < width; ++i) {
+            float dx = unit(random), dy = unit(random);
+            const int corner = pick(random); // pixel corners, where the block's planes pass
+            if (corner == 0) {
+                dx = 0.0f;
+                dy = 0.0f;
+            } else if (corner == 1) {
+                dx = std::nextafter(1.0f, 0.0f);
+                dy = std::nextafter(1.0f, 0.0f);
+            }
+            packet.set(i, primary.through(static_cast<float>(x0 + i) + dx,
+                                          static_cast<float>(y0 + r) + dy));
+        }
+    }
+    return block;
+}
+
+// Shadow rays from the closest hits of a block towards `light`, as the lab's shading makes them.
+Block shadowBlock(const Bvh& bvh, const Block& camera, const glm::vec3& light, float epsilon) {
+    Block shadows;
+    shadows.count = camera.count;
+    for (int r = 0; r < camera.count; ++r) {
+        HitPacket hits;
+        closestHit8(bvh, camera.packets[r], hits);
+        for (int i = 0; i < kPacketSize; ++i) {
+            if (!hits.hit(i).found()) {
+                continue;
+            }
+            const Ray ray = camera.packets[r].ray(i);
+            const glm::vec3 point = ray.origin + hits.t[i] * ray.direction;
+            const glm::vec3 toLight = light - point;
+            const float distance = std::sqrt(glm::dot(toLight, toLight));
+            if (distance > 0.0f) {
+                shadows.packets[r].set(i,
+                                       Ray{point, toLight / distance, epsilon, distance - epsilon});
+            }
+        }
+    }
+    return shadows;
+}
+
+struct Tally {
+    int blocks = 0;         // blocks with at least one ray
+    int withCandidates = 0; // blocks traced from their candidates
+    int hits = 0;
+};
+
+bool hasRays(const Block& block) {
+    for (int r = 0; r < block.count; ++r) {
+        if (block.packets[r].lanes != 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Every lane of the block: closestHitCandidates == closestHit8 when the frustum fits.
+void expectCameraBlockExact(const Bvh& bvh, const Block& block, Tally& tally) {
+    if (!hasRays(block)) {
+        return;
+    }
+    ++tally.blocks;
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    if (!frustumOfRays(bvh, block.packets, block.count, frustum) ||
+        !frustumCandidates(bvh, frustum, candidates)) {
+        return;
+    }
+    ++tally.withCandidates;
+    for (int r = 0; r < block.count; ++r) {
+        HitPacket expected, got;
+        closestHit8(bvh, block.packets[r], expected);
+        closestHitCandidates(bvh, candidates, block.packets[r], got);
+        for (int i = 0; i < kPacketSize; ++i) {
+            ASSERT_TRUE(sameHit(got.hit(i), expected.hit(i)))
+                << "row " << r << " lane " << i << ": candidates t=" << got.t[i]
+                << " tri=" << got.triangle[i] << ", packet t=" << expected.t[i]
+                << " tri=" << expected.triangle[i] << " (" << candidates.count << " candidates)";
+            tally.hits += expected.hit(i).found() ? 1 : 0;
+        }
+    }
+}
+
+void expectShadowBlockExact(const Bvh& bvh, const Block& block, const glm::vec3& light,
+                            Tally& tally) {
+    if (!hasRays(block)) {
+        return;
+    }
+    ++tally.blocks;
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    if (!frustumOfSegments(bvh, block.packets, block.count, light, frustum) ||
+        !frustumCandidates(bvh, frustum, candidates)) {
+        return;
+    }
+    ++tally.withCandidates;
+    for (int r = 0; r < block.count; ++r) {
+        const unsigned expected = anyHit8(bvh, block.packets[r]);
+        const unsigned got = anyHitCandidates(bvh, candidates, block.packets[r]);
+        ASSERT_EQ(got, expected) << "row " << r << " (" << candidates.count << " candidates)";
+        tally.hits += __builtin_popcount(expected);
+    }
+}
+
+// Every block of a width x height image from `camera`, and the shadow rays towards `light`.
+void expectImageExact(const Scene& scene, const Camera& camera, const glm::vec3& light,
+                      float epsilon, Tally& cameraTally, Tally& shadowTally, uint32_t seed) {
+    const Bvh bvh = buildBvh(scene);
+    if (bvh.wideNodes.empty()) {
+        GTEST_SKIP() << "no AVX2: the frustum path is never taken";
+    }
+    const int width = 100, height = 60; // partial blocks on the right and at the bottom
+    const PrimaryRays primary(camera, width, height);
+    std::mt19937 random(seed);
+    for (int y0 = 0; y0 < height; y0 += kPacketSize) {
+        for (int x0 = 0; x0 < width; x0 += kPacketSize) {
+            const Block block = cameraBlock(primary, width, height, x0, y0, random);
+            expectCameraBlockExact(bvh, block, cameraTally);
+            expectShadowBlockExact(bvh, shadowBlock(bvh, block, light, epsilon), light,
+                                   shadowTally);
+            if (testing::Test::HasFatalFailure()) {
+                return;
+            }
+        }
+    }
+}
+
+TEST(BvhFrustum, CornellBoxBlocksAreExactAndCulled) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    const RenderSettings lab;
+    for (float epsilon : {1e-3f, 0.0f}) {
+        Tally cameraTally, shadowTally;
+        expectImageExact(makeCornellBox(), lab.camera, lab.light.position, epsilon, cameraTally,
+                         shadowTally, 7);
+        ASSERT_FALSE(HasFatalFailure());
+        // The box's 30 large triangles: every block's frustum holds few of them.
+        EXPECT_EQ(cameraTally.withCandidates, cameraTally.blocks);
+        EXPECT_GT(shadowTally.withCandidates, shadowTally.blocks * 3 / 4)
+            << shadowTally.withCandidates << " of " << shadowTally.blocks;
+        EXPECT_GT(cameraTally.hits, 3000);
+        EXPECT_GT(shadowTally.hits, 100); // the blocks cast shadows
+    }
+}
+
+TEST(BvhFrustum, RandomCamerasOnSoupsHeightFieldAndSphere) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    const Scene scenes[] = {makeTriangleSoup(300, 0.6f, 3), makeTriangleSoup(3000, 0.15f, 4),
+                            makeHeightField(12, 5), makeClosedSphere(8, 12, 0.8f, 0.05f, 6)};
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> position(-2.5f, 2.5f);
+    Tally cameraTally, shadowTally;
+    for (const Scene& scene : scenes) {
+        for (int view = 0; view < 4; ++view) {
+            Camera camera;
+            camera.position = {position(random), position(random), position(random)};
+            lookAt(camera, {0.1f * position(random), 0.1f * position(random), 0.0f});
+            camera.verticalFovDegrees = view % 2 == 0 ? 50.0f : 100.0f;
+            const glm::vec3 light{position(random), 2.0f, position(random)};
+            expectImageExact(scene, camera, light, 1e-3f, cameraTally, shadowTally,
+                             static_cast<uint32_t>(view));
+            ASSERT_FALSE(HasFatalFailure());
+        }
+    }
+    EXPECT_GT(cameraTally.withCandidates, cameraTally.blocks / 4);
+    EXPECT_GT(shadowTally.withCandidates, 0);
+    EXPECT_GT(cameraTally.hits, 10000);
+    EXPECT_GT(shadowTally.hits, 1000);
+}
+
+TEST(BvhFrustum, FarFromTheOriginStaysExact) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    // The box moved 3000 units away: coordinates keep fewer bits below the unit.
+    Scene scene = makeCornellBox();
+    const glm::vec3 offset{3000.0f, -2000.0f, 1000.0f};
+    for (Triangle& t : scene.triangles) {
+        t.v0 += offset;
+        t.v1 += offset;
+        t.v2 += offset;
+    }
+    const RenderSettings lab;
+    Camera camera = lab.camera;
+    camera.position += offset;
+    Tally cameraTally, shadowTally;
+    expectImageExact(scene, camera, lab.light.position + offset, 1e-3f, cameraTally, shadowTally,
+                     9);
+    ASSERT_FALSE(HasFatalFailure());
+    EXPECT_EQ(cameraTally.withCandidates, cameraTally.blocks);
+    EXPECT_GT(cameraTally.hits, 3000);
+}
+
+// A triangle with an edge along the block's outermost rays (its first column) is a candidate and
+// gives those rays closestHit8's answers; one wholly beside the block is culled.
+TEST(BvhFrustum, TriangleAlongTheBlockEdgeIsKeptOneBesideItCulled) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    const Camera camera;
+    const PrimaryRays primary(camera, 64, 64);
+    Block block;
+    block.count = kPacketSize;
+    for (int r = 0; r < kPacketSize; ++r) {
+        for (int i = 0; i < kPacketSize; ++i) {
+            block.packets[r].set(
+                i, primary.through(static_cast<float>(16 + i), static_cast<float>(16 + r)));
+        }
+    }
+    // Through the left column's top and bottom rays, and away to the left of the block.
+    const Ray top = block.packets[0].ray(0);
+    const Ray bottom = block.packets[kPacketSize - 1].ray(0);
+    Scene scene;
+    scene.materials.push_back(Material{});
+    const glm::vec3 a = top.origin + 4.0f * top.direction;
+    const glm::vec3 b = bottom.origin + 4.0f * bottom.direction;
+    scene.triangles.push_back(Triangle{a, b, a + glm::vec3(3.0f, 0.0f, 0.0f), 0});
+    // A second triangle wholly outside, to be culled.
+    scene.triangles.push_back(Triangle{a + glm::vec3(5.0f, 0, 0), b + glm::vec3(5.0f, 0, 0),
+                                       a + glm::vec3(6.0f, 0, 0), 0});
+    const Bvh bvh = buildBvh(scene);
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    ASSERT_TRUE(frustumOfRays(bvh, block.packets, block.count, frustum));
+    ASSERT_TRUE(frustumCandidates(bvh, frustum, candidates));
+    ASSERT_EQ(candidates.count, 1);
+    int hits = 0;
+    for (int r = 0; r < kPacketSize; ++r) {
+        HitPacket expected, got;
+        closestHit8(bvh, block.packets[r], expected);
+        closestHitCandidates(bvh, candidates, block.packets[r], got);
+        for (int i = 0; i < kPacketSize; ++i) {
+            EXPECT_TRUE(sameHit(got.hit(i), expected.hit(i))) << r << ", " << i;
+            hits += expected.hit(i).found() ? 1 : 0;
+        }
+    }
+    EXPECT_GT(hits, 0);
+}
+
+TEST(BvhFrustum, RefusedWhereTheContractDoesNotHold) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    const Bvh bvh = buildBvh(makeCornellBox());
+    const RenderSettings lab;
+    const PrimaryRays primary(lab.camera, 64, 64);
+    auto fresh = [&] {
+        Block block;
+        block.count = 2;
+        for (int r = 0; r < 2; ++r) {
+            for (int i = 0; i < kPacketSize; ++i) {
+                block.packets[r].set(
+                    i, primary.through(static_cast<float>(i) + 0.5f, static_cast<float>(r) + 0.5f));
+            }
+        }
+        return block;
+    };
+    RayFrustum frustum;
+    Block block = fresh();
+    ASSERT_TRUE(frustumOfRays(bvh, block.packets, block.count, frustum));
+    EXPECT_EQ(frustum.planeCount, 4);
+    EXPECT_GT(frustum.tolerance, 0.0f);
+
+    block.packets[1].origin[1][3] += 1e-3f; // another origin
+    EXPECT_FALSE(frustumOfRays(bvh, block.packets, block.count, frustum));
+    block = fresh();
+    block.packets[0].direction[2][5] = kNaN;
+    EXPECT_FALSE(frustumOfRays(bvh, block.packets, block.count, frustum));
+    block = fresh();
+    // Opposite the first ray: no axis has both within 78 degrees.
+    block.packets[1].set(7, Ray{lab.camera.position, -block.packets[0].ray(0).direction});
+    EXPECT_FALSE(frustumOfRays(bvh, block.packets, block.count, frustum));
+    block = fresh();
+    block.packets[0].lanes = 0;
+    block.packets[1].lanes = 0;
+    EXPECT_FALSE(frustumOfRays(bvh, block.packets, block.count, frustum)); // no ray at all
+    // A NaN lane outside the lane mask is never read.
+    block = fresh();
+    block.packets[0].direction[0][7] = kNaN;
+    block.packets[0].lanes = 0x7f;
+    EXPECT_TRUE(frustumOfRays(bvh, block.packets, block.count, frustum));
+
+    block = fresh();
+    EXPECT_TRUE(frustumOfSegments(bvh, block.packets, block.count, lab.light.position, frustum));
+    EXPECT_EQ(frustum.planeCount, 5);
+    block.packets[0].origin[0][2] = kNaN;
+    EXPECT_FALSE(frustumOfSegments(bvh, block.packets, block.count, lab.light.position, frustum));
+    // A segment end at the apex itself has no direction.
+    block = fresh();
+    EXPECT_FALSE(frustumOfSegments(bvh, block.packets, block.count, lab.camera.position, frustum));
+}
+
+TEST(BvhFrustum, TooManyTrianglesIsReported) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    // A dense soup seen whole: far more than kMaxFrustumCandidates in one wide frustum.
+    const Bvh bvh = buildBvh(makeTriangleSoup(4000, 0.05f, 8));
+    Camera camera;
+    camera.position = {0.0f, 0.0f, -4.0f};
+    camera.verticalFovDegrees = 90.0f;
+    const PrimaryRays primary(camera, 2, 2);
+    Block block;
+    block.count = 2;
+    for (int r = 0; r < 2; ++r) {
+        for (int i = 0; i < 2; ++i) {
+            block.packets[r].set(i, primary.through(static_cast<float>(i), static_cast<float>(r)));
+            block.packets[r].set(
+                i + 2, primary.through(static_cast<float>(i + 1), static_cast<float>(r + 1)));
+        }
+    }
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    ASSERT_TRUE(frustumOfRays(bvh, block.packets, block.count, frustum));
+    EXPECT_FALSE(frustumCandidates(bvh, frustum, candidates));
+}
+
+} // namespace
+} // namespace raylab::accel_test
