@@ -48,7 +48,8 @@ RAYLAB_AVX2 inline __m256i srgbQuantize8(__m256 linear, const uint32_t* buckets)
 }
 
 // Stores 8 RGBA pixels from 24 channel bytes in 0..255 (one per int32 lane, in input order).
-RAYLAB_AVX2 inline void storeRgba8(__m256i c0, __m256i c1, __m256i c2, uint8_t* out) {
+RAYLAB_AVX2 inline void storeRgba8(__m256i c0, __m256i c1, __m256i c2, PixelOrder order,
+                                   uint8_t* out) {
     // Packing works per 128-bit half: dwords of `bytes` hold channels 0-3, 8-11, 16-19, 16-19 |
     // 4-7, 12-15, 20-23, 20-23.
     const __m256i bytes =
@@ -57,15 +58,19 @@ RAYLAB_AVX2 inline void storeRgba8(__m256i c0, __m256i c1, __m256i c2, uint8_t* 
     const __m256i ordered =
         _mm256_permutevar8x32_epi32(bytes, _mm256_setr_epi32(0, 4, 1, 1, 5, 2, 6, 6));
     const __m256i spread = _mm256_shuffle_epi8(
-        ordered, _mm256_setr_epi8(0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1, 9, 10, 11, -1, //
-                                  0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1, 9, 10, 11, -1));
+        ordered, order == PixelOrder::Rgba
+                     ? _mm256_setr_epi8(0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1, 9, 10, 11, -1, //
+                                        0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1, 9, 10, 11, -1)
+                     : _mm256_setr_epi8(2, 1, 0, -1, 5, 4, 3, -1, 8, 7, 6, -1, 11, 10, 9, -1, //
+                                        2, 1, 0, -1, 5, 4, 3, -1, 8, 7, 6, -1, 11, 10, 9, -1));
     const __m256i rgba = _mm256_or_si256(spread, _mm256_set1_epi32(static_cast<int>(0xff000000u)));
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), rgba);
 }
 
 // Converts the first multiple of 8 pixels; returns how many.
 RAYLAB_AVX2 std::size_t toRgba8Avx2(std::span<const glm::vec3> linear, float scale,
-                                    DisplayMode mode, float exposure, std::span<uint8_t> rgba) {
+                                    DisplayMode mode, float exposure, std::span<uint8_t> rgba,
+                                    PixelOrder order) {
     const std::size_t count = linear.size() & ~std::size_t{7};
     const float* in = reinterpret_cast<const float*>(linear.data());
     const __m256 scale8 = _mm256_set1_ps(scale);
@@ -75,7 +80,7 @@ RAYLAB_AVX2 std::size_t toRgba8Avx2(std::span<const glm::vec3> linear, float sca
             for (int k = 0; k < 3; ++k) {
                 c[k] = labQuantize8(_mm256_mul_ps(_mm256_loadu_ps(in + 8 * k), scale8));
             }
-            storeRgba8(c[0], c[1], c[2], &rgba[4 * i]);
+            storeRgba8(c[0], c[1], c[2], order, &rgba[4 * i]);
         }
         return count;
     }
@@ -87,7 +92,7 @@ RAYLAB_AVX2 std::size_t toRgba8Avx2(std::span<const glm::vec3> linear, float sca
             const __m256 scaled = _mm256_mul_ps(_mm256_loadu_ps(in + 8 * k), scale8);
             c[k] = srgbQuantize8(_mm256_mul_ps(scaled, gain), buckets);
         }
-        storeRgba8(c[0], c[1], c[2], &rgba[4 * i]);
+        storeRgba8(c[0], c[1], c[2], order, &rgba[4 * i]);
     }
     return count;
 }
@@ -102,36 +107,35 @@ uint8_t displayChannel(float value, DisplayMode mode, float exposure) {
 }
 
 void toRgba8Scalar(std::span<const glm::vec3> linear, float scale, DisplayMode mode, float exposure,
-                   std::span<uint8_t> rgba) {
+                   std::span<uint8_t> rgba, PixelOrder order) {
     assert(rgba.size() >= 4 * linear.size());
-    if (mode == DisplayMode::Lab) {
-        for (std::size_t i = 0; i < linear.size(); ++i) {
-            const glm::vec3 c = linear[i] * scale;
-            rgba[4 * i + 0] = quantize(c.x);
-            rgba[4 * i + 1] = quantize(c.y);
-            rgba[4 * i + 2] = quantize(c.z);
-            rgba[4 * i + 3] = 255;
-        }
-        return;
-    }
+    const std::size_t red = order == PixelOrder::Rgba ? 0 : 2;
+    const std::size_t blue = 2 - red;
     const SrgbQuantizer& srgb = srgbQuantizer();
     const float gain = std::exp2(exposure);
     for (std::size_t i = 0; i < linear.size(); ++i) {
         const glm::vec3 c = linear[i] * scale;
-        rgba[4 * i + 0] = srgb(c.x * gain);
-        rgba[4 * i + 1] = srgb(c.y * gain);
-        rgba[4 * i + 2] = srgb(c.z * gain);
-        rgba[4 * i + 3] = 255;
+        uint8_t* out = &rgba[4 * i];
+        if (mode == DisplayMode::Lab) {
+            out[red] = quantize(c.x);
+            out[1] = quantize(c.y);
+            out[blue] = quantize(c.z);
+        } else {
+            out[red] = srgb(c.x * gain);
+            out[1] = srgb(c.y * gain);
+            out[blue] = srgb(c.z * gain);
+        }
+        out[3] = 255;
     }
 }
 
 void toRgba8(std::span<const glm::vec3> linear, float scale, DisplayMode mode, float exposure,
-             std::span<uint8_t> rgba) {
+             std::span<uint8_t> rgba, PixelOrder order) {
     assert(rgba.size() >= 4 * linear.size());
     static const bool simd = bvhSimdSupported();
-    const std::size_t done = simd ? toRgba8Avx2(linear, scale, mode, exposure, rgba) : 0;
+    const std::size_t done = simd ? toRgba8Avx2(linear, scale, mode, exposure, rgba, order) : 0;
     if (done < linear.size()) {
-        toRgba8Scalar(linear.subspan(done), scale, mode, exposure, rgba.subspan(4 * done));
+        toRgba8Scalar(linear.subspan(done), scale, mode, exposure, rgba.subspan(4 * done), order);
     }
 }
 

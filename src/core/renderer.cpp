@@ -128,7 +128,7 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
                 const std::size_t count = static_cast<std::size_t>(tile.x1 - tile.x0);
                 toRgba8(std::span<const glm::vec3>(sums).subspan(first, count), displayScale,
                         settings.display, settings.exposure,
-                        options.displayRgba.subspan(4 * first, 4 * count));
+                        options.displayRgba.subspan(4 * first, 4 * count), options.displayOrder);
             }
         }
         primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);

@@ -4,6 +4,7 @@
 // samples are summed in order on one thread, so the bytes never depend on the thread count.
 
 #include "bvh.h"
+#include "display_transform.h"
 #include "framebuffer.h"
 #include "lab_shading.h"
 #include "render_settings.h"
@@ -23,8 +24,10 @@ struct PassOptions {
     std::function<void(double fraction)> progress;
     // When not empty (4 * width * height bytes): as soon as the pass has added its samples to a
     // tile, the tile's pixels are written here, on the tile's thread, exactly as
-    // toRgba8(sums, 1 / (sampleIndex + 1), settings.display, settings.exposure) writes them.
+    // toRgba8(sums, 1 / (sampleIndex + 1), settings.display, settings.exposure, displayOrder)
+    // writes them.
     std::span<uint8_t> displayRgba;
+    PixelOrder displayOrder = PixelOrder::Rgba;
 };
 
 // Adds sample `sampleIndex` (0 = the pixel centre) of every pixel to sums (width * height,

@@ -1,10 +1,11 @@
 #pragma once
-// The CPU image on screen: an RGBA8 texture shown over the whole framebuffer, row 0 of the image at
-// the top, with nearest filtering and an exact texel-to-pixel mapping. When the image has the
-// framebuffer's size (resolution scale 1), it is copied with glBlitFramebuffer (flipped, 1:1)
-// from a framebuffer object holding the texture: on Mesa's llvmpipe that costs about a third of
-// the shader quad at 1280 x 720 (PERFORMANCE.md). Otherwise a fullscreen quad samples it
-// (shaders/quad.frag). Needs a current OpenGL 3.3 core context (glad loaded) for its whole life.
+// The CPU image on screen: an 8-bit texture holding BGRA data, shown over the whole framebuffer,
+// row 0 of the image at the top, with nearest filtering and an exact texel-to-pixel mapping.
+// When the image has the framebuffer's size (resolution scale 1), it is copied with
+// glBlitFramebuffer (flipped, 1:1) from a framebuffer object holding the texture: on Mesa's
+// llvmpipe, with the texture in the window's BGRA order, that is a plain copy (PERFORMANCE.md).
+// Otherwise a fullscreen quad samples it (shaders/quad.frag). Needs a current OpenGL 3.3 core
+// context (glad loaded) for its whole life.
 
 #include "io/image_io.h"
 
@@ -24,9 +25,9 @@ public:
     // Returns false with a one-line error.
     bool create(std::string& error);
 
-    // Uploads the image with glTexSubImage2D; the texture is reallocated only when the size
-    // changed. An empty image is ignored.
-    void upload(const Rgba8Image& image);
+    // Uploads an image of B, G, R, A bytes (ShownImage::bgra) with glTexSubImage2D; the texture
+    // is reallocated only when the size changed. An empty image is ignored.
+    void upload(const Rgba8Image& bgraImage);
     bool hasImage() const { return width_ > 0 && height_ > 0; }
 
     // Draws the image over the whole of the default framebuffer (0, 0, framebufferWidth,

@@ -39,8 +39,8 @@ int previewDivisor(double expectedSeconds, double budgetSeconds) {
     return static_cast<int>(std::clamp(k, 2.0, 16.0));
 }
 
-// Writes the w x h RGBA image that shows `small` (sw x sh RGBA) enlarged by pixel replication:
-// pixel (x, y) shows small's (x * sw / w, y * sh / h).
+// Writes the w x h image that shows `small` (sw x sh, 4 bytes a pixel) enlarged by pixel
+// replication: pixel (x, y) shows small's (x * sw / w, y * sh / h).
 void enlarge(const std::vector<uint8_t>& small, int sw, int sh, int w, int h, Rgba8Image& out) {
     out.width = w;
     out.height = h;
@@ -149,7 +149,7 @@ void RenderWorker::run() {
     double secondsPerPixel = 0.0; // measured by the last pass, 0 before any
     uint64_t published = 0;
     std::vector<glm::vec3> previewSums;
-    std::vector<uint8_t> previewRgba;
+    std::vector<uint8_t> previewBgra;
     ShownImage staging;
 
     const auto publish = [&](ShownImage& picture) {
@@ -235,10 +235,11 @@ void RenderWorker::run() {
                 const double seconds = secondsSince(start);
                 tally(&PassTotals::previews, seconds);
                 secondsPerPixel = seconds / static_cast<double>(pixelCount(small));
-                previewRgba.resize(4 * pixelCount(small));
-                toRgba8(previewSums, 1.0f, settings.display, settings.exposure, previewRgba);
-                enlarge(previewRgba, small.width, small.height, settings.width, settings.height,
-                        staging.image);
+                previewBgra.resize(4 * pixelCount(small));
+                toRgba8(previewSums, 1.0f, settings.display, settings.exposure, previewBgra,
+                        PixelOrder::Bgra);
+                enlarge(previewBgra, small.width, small.height, settings.width, settings.height,
+                        staging.bgra);
                 staging.linear = Framebuffer();
                 staging.settings = small;
                 staging.scene = job.scene;
@@ -254,12 +255,13 @@ void RenderWorker::run() {
 
         double seconds = 0.0;
         RayCounts counts;
-        bool displayed = false; // staging.image already shows the sums
+        bool displayed = false; // staging.bgra already shows the sums
         if (samples < static_cast<uint32_t>(settings.samplesPerPixel)) {
             // The pass writes the display bytes tile by tile, on the tracing threads.
-            staging.image.pixels.resize(4 * pixelCount(settings));
+            staging.bgra.pixels.resize(4 * pixelCount(settings));
             PassOptions full = pass;
-            full.displayRgba = staging.image.pixels;
+            full.displayRgba = staging.bgra.pixels;
+            full.displayOrder = PixelOrder::Bgra;
             const auto start = Clock::now();
             const bool complete =
                 accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, full);
@@ -276,12 +278,12 @@ void RenderWorker::run() {
             displayed = true;
         }
         // A new pass, or a new job that keeps the samples (display, cap, threads): show it.
-        staging.image.width = settings.width;
-        staging.image.height = settings.height;
+        staging.bgra.width = settings.width;
+        staging.bgra.height = settings.height;
         if (!displayed) {
-            staging.image.pixels.resize(4 * pixelCount(settings));
+            staging.bgra.pixels.resize(4 * pixelCount(settings));
             toRgba8(sums, 1.0f / static_cast<float>(samples), settings.display, settings.exposure,
-                    staging.image.pixels);
+                    staging.bgra.pixels, PixelOrder::Bgra);
         }
         if (job.keepLinear) {
             // The same arithmetic as core's render(): sum * (1 / n).

@@ -41,7 +41,7 @@ std::string settingsPathFor(const std::string& path) {
 
 bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error) {
     if (hasExtension(path, ".png")) {
-        if (!writePng(path, shown.image, error, chunksFor(shown))) {
+        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown))) {
             return false;
         }
     } else if (shown.linear.pixels.empty()) {
@@ -66,7 +66,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
     // name is free, atomically.
     const fs::path temporary =
         folder / (".raylab-screenshot-" + std::to_string(::getpid()) + ".png.tmp");
-    if (!writePng(temporary.string(), shown.image, error, chunksFor(shown))) {
+    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown))) {
         return false;
     }
     bool claimed = false;

@@ -9,11 +9,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace raylab::viewer {
 
 struct ShownImage {
-    Rgba8Image image; // at render resolution, row 0 at the top
+    // At render resolution, row 0 at the top, bytes B, G, R, A (PixelOrder::Bgra: the order the
+    // window's texture keeps, so uploading it is a copy). rgbaOf() gives it as RGBA.
+    Rgba8Image bgra;
     // The linear picture (sums / samples, as raylab-render computes it); only when the job asked
     // for it (RenderJob::keepLinear), and never for a preview.
     Framebuffer linear;
@@ -29,5 +32,14 @@ struct ShownImage {
     double raysPerSecond = 0.0; // primary + shadow rays of that pass per second
     uint64_t serial = 0;        // increases with every picture published
 };
+
+// The picture with its bytes in RGBA order (for image files).
+inline Rgba8Image rgbaOf(const ShownImage& shown) {
+    Rgba8Image rgba = shown.bgra;
+    for (std::size_t i = 0; i + 3 < rgba.pixels.size(); i += 4) {
+        std::swap(rgba.pixels[i], rgba.pixels[i + 2]);
+    }
+    return rgba;
+}
 
 } // namespace raylab::viewer

@@ -225,14 +225,14 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
 
         gui.beginFrame();
         if (pictureToUpload) {
-            quad.upload(shown.image);
+            quad.upload(shown.bgra);
             stats.uploads.add(quad.lastUploadSeconds());
             if (shown.passSeconds > 0.0) {
                 numbers.passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
             }
             numbers.uploadMs = quad.lastUploadSeconds() * 1000.0;
-            numbers.picture = {shown.image.width,
-                               shown.image.height,
+            numbers.picture = {shown.bgra.width,
+                               shown.bgra.height,
                                shown.preview ? 0 : shown.settings.samplesPerPixel,
                                shown.preview,
                                shown.final,
@@ -274,7 +274,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         // A picture of the current job that settings reproduce exactly.
         const bool current =
-            shown.jobSerial == submittedSerial && !shown.preview && shown.image.width > 0;
+            shown.jobSerial == submittedSerial && !shown.preview && shown.bgra.width > 0;
         const bool scriptEnds = scripted && framesShown + 1 >= command.frames &&
                                 (!needsFinal || (current && shown.final));
         const bool finalFrame = quit || scriptEnds;
@@ -343,8 +343,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     }
     if (!options.stats.empty()) {
         stats.tracer = worker.totals();
-        stats.width = shown.image.width;
-        stats.height = shown.image.height;
+        stats.width = shown.bgra.width;
+        stats.height = shown.bgra.height;
         stats.samples = shown.preview ? 0 : shown.settings.samplesPerPixel;
         stats.scene = scene->source;
         stats.triangles = scene->scene.triangles.size();
@@ -354,7 +354,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
     }
     if (!command.screenshot.empty()) {
-        if (shown.image.width > 0 && !shown.preview) {
+        if (shown.bgra.width > 0 && !shown.preview) {
             if (!saveScreenshot(command.screenshot, shown, error)) {
                 std::fprintf(stderr, "raylab: %s\n", error.c_str());
                 exitCode = 1;

@@ -215,5 +215,37 @@ TEST(DisplayTransformAvx2, EqualsScalarOnShortAndMisalignedSpans) {
     }
 }
 
+// PixelOrder::Bgra writes the Rgba bytes with red and blue swapped, on both paths and for every
+// length (the AVX2 groups of 8 and the scalar tail).
+TEST(DisplayTransform, BgraSwapsRedAndBlue) {
+    std::vector<glm::vec3> pixels;
+    for (int i = 0; i < 37; ++i) {
+        pixels.emplace_back(0.03f * static_cast<float>(i), 0.5f,
+                            1.0f - 0.02f * static_cast<float>(i));
+    }
+    pixels[5] = glm::vec3(std::numeric_limits<float>::quiet_NaN(), -1.0f, 2.0f);
+    for (const Transform& t : kTransforms) {
+        for (std::size_t n : {std::size_t{0}, std::size_t{3}, std::size_t{8}, std::size_t{37}}) {
+            const std::span<const glm::vec3> some(pixels.data(), n);
+            std::vector<uint8_t> rgba(4 * n), bgra(4 * n), bgraScalar(4 * n);
+            toRgba8(some, t.scale, t.mode, t.exposure, rgba);
+            toRgba8(some, t.scale, t.mode, t.exposure, bgra, PixelOrder::Bgra);
+            toRgba8Scalar(some, t.scale, t.mode, t.exposure, bgraScalar, PixelOrder::Bgra);
+            EXPECT_EQ(bgra, bgraScalar) << t << ", " << n << " pixels";
+            for (std::size_t i = 0; i < n; ++i) {
+                const uint8_t* c = &rgba[4 * i];
+                const uint8_t* d = &bgra[4 * i];
+                ASSERT_TRUE(d[0] == c[2] && d[1] == c[1] && d[2] == c[0] && d[3] == 255)
+                    << t << ", pixel " << i;
+            }
+        }
+    }
+    // Not a swap of equal bytes: the first pixel is black red, full blue.
+    std::vector<uint8_t> one(4);
+    toRgba8(std::span<const glm::vec3>(pixels.data(), 1), 1.0f, DisplayMode::Lab, 0.0f, one,
+            PixelOrder::Bgra);
+    EXPECT_EQ(one, (std::vector<uint8_t>{255, 128, 0, 255}));
+}
+
 } // namespace
 } // namespace raylab

@@ -57,7 +57,9 @@ ShownImage waitFinal(RenderWorker& worker, uint64_t serial) {
 
 std::vector<uint8_t> reference(const LoadedScene& loaded, const RenderSettings& settings) {
     const Framebuffer image = render(loaded.scene, loaded.bvh, settings);
-    return toRgba8(image, settings.display, settings.exposure);
+    std::vector<uint8_t> bgra(4 * image.pixels.size());
+    toRgba8(image.pixels, 1.0f, settings.display, settings.exposure, bgra, PixelOrder::Bgra);
+    return bgra;
 }
 
 TEST(ViewerRenderWorker, FinalPictureEqualsCoreRender) {
@@ -66,9 +68,9 @@ TEST(ViewerRenderWorker, FinalPictureEqualsCoreRender) {
     const RenderSettings settings = smallSettings(3);
     const ShownImage shown = waitFinal(worker, worker.submit({box, settings}));
     EXPECT_EQ(shown.settings.samplesPerPixel, 3);
-    EXPECT_EQ(shown.image.width, 64);
-    EXPECT_EQ(shown.image.height, 48);
-    EXPECT_EQ(shown.image.pixels, reference(*box, settings));
+    EXPECT_EQ(shown.bgra.width, 64);
+    EXPECT_EQ(shown.bgra.height, 48);
+    EXPECT_EQ(shown.bgra.pixels, reference(*box, settings));
 }
 
 TEST(ViewerRenderWorker, WakesTheUiForEveryPicture) {
@@ -93,19 +95,19 @@ TEST(ViewerRenderWorker, ChangeRestartsAndDisplayOnlyRemaps) {
     worker.submit({box, settings});
     settings.camera.yawDegrees = 10.0f; // replaces the job at once, likely mid-pass
     const ShownImage moved = waitFinal(worker, worker.submit({box, settings}));
-    EXPECT_EQ(moved.image.pixels, reference(*box, settings));
+    EXPECT_EQ(moved.bgra.pixels, reference(*box, settings));
     EXPECT_EQ(moved.settings.camera.yawDegrees, 10.0f);
 
     settings.display = DisplayMode::Srgb;
     settings.exposure = 1.0f;
     const ShownImage remapped = waitFinal(worker, worker.submit({box, settings}));
     EXPECT_EQ(remapped.settings.samplesPerPixel, 2);
-    EXPECT_EQ(remapped.image.pixels, reference(*box, settings));
+    EXPECT_EQ(remapped.bgra.pixels, reference(*box, settings));
 
     settings.samplesPerPixel = 4; // a higher cap continues accumulating
     const ShownImage more = waitFinal(worker, worker.submit({box, settings}));
     EXPECT_EQ(more.settings.samplesPerPixel, 4);
-    EXPECT_EQ(more.image.pixels, reference(*box, settings));
+    EXPECT_EQ(more.bgra.pixels, reference(*box, settings));
 }
 
 TEST(ViewerRenderWorker, LinearPictureEqualsCoreRender) {
@@ -136,7 +138,7 @@ TEST(ViewerRenderWorker, PreviewWhenPassesAreSlow) {
            std::chrono::steady_clock::now() < deadline) {
         if (worker.takeLatest(shown) && shown.jobSerial == serial && shown.preview) {
             ++previewsCaught;
-            EXPECT_EQ(shown.image.width, 64);
+            EXPECT_EQ(shown.bgra.width, 64);
             EXPECT_LT(shown.settings.width, 64);
             EXPECT_FALSE(shown.final);
         }
@@ -145,7 +147,7 @@ TEST(ViewerRenderWorker, PreviewWhenPassesAreSlow) {
     EXPECT_LE(previewsCaught, 1);
     ASSERT_TRUE(shown.final);
     EXPECT_FALSE(shown.preview);
-    EXPECT_EQ(shown.image.pixels, reference(*box, settings));
+    EXPECT_EQ(shown.bgra.pixels, reference(*box, settings));
 }
 
 // A camera that moves faster than passes finish: first passes that fit the budget are not
@@ -162,7 +164,7 @@ TEST(ViewerRenderWorker, ShortFirstPassesFinishWhileTheCameraMoves) {
         std::this_thread::sleep_for(std::chrono::microseconds(300));
     }
     const ShownImage last = waitFinal(worker, serial);
-    EXPECT_EQ(last.image.pixels, reference(*box, settings));
+    EXPECT_EQ(last.bgra.pixels, reference(*box, settings));
     const PassTotals totals = worker.totals();
     EXPECT_EQ(totals.cancelled, 0u);
     EXPECT_EQ(totals.previews.count, 0u);
@@ -185,7 +187,7 @@ TEST(ViewerRenderWorker, LongPassesAreCancelledByANewPicture) {
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     const ShownImage last = waitFinal(worker, serial);
-    EXPECT_EQ(last.image.pixels, reference(*box, settings));
+    EXPECT_EQ(last.bgra.pixels, reference(*box, settings));
     EXPECT_GT(worker.totals().cancelled, 0u);
 }
 
@@ -258,9 +260,9 @@ TEST(ViewerScreenshot, NumberedNamesNeverOverwrite) {
     { std::ofstream(dir / "raylab-0001.png") << "not mine"; }
     { std::ofstream(dir / "raylab-0002.json") << "{}"; }
     ShownImage shown;
-    shown.image.width = 2;
-    shown.image.height = 1;
-    shown.image.pixels = {255, 0, 0, 255, 0, 0, 255, 255};
+    shown.bgra.width = 2;
+    shown.bgra.height = 1;
+    shown.bgra.pixels = {255, 0, 0, 255, 0, 0, 255, 255};
     shown.settings.width = 2;
     shown.settings.height = 1;
     std::string path, error;
@@ -273,7 +275,9 @@ TEST(ViewerScreenshot, NumberedNamesNeverOverwrite) {
     Rgba8Image back;
     std::map<std::string, std::string> chunks;
     ASSERT_TRUE(readPng(path, back, error, &chunks)) << error;
-    EXPECT_EQ(back.pixels, shown.image.pixels);
+    // Written in RGBA: the blue pixel first, then the red one.
+    EXPECT_EQ(back.pixels, (std::vector<uint8_t>{0, 0, 255, 255, 255, 0, 0, 255}));
+    EXPECT_EQ(back.pixels, rgbaOf(shown).pixels);
     RenderSettings fromChunk;
     ASSERT_TRUE(settingsFromJson(chunks.at(kSettingsChunk), fromChunk, error)) << error;
     EXPECT_EQ(fromChunk.width, 2);
