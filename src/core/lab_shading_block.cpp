@@ -1,6 +1,7 @@
 // shadeLabBlock: the packets of an image block share one frustum walk for their camera rays and
-// one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles are
-// traced one by one through the BVH. Either way each lane's radiance is shadeLab8's.
+// one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles, and
+// every packet of a large scene, are traced one by one through the BVH. Either way each lane's
+// radiance is shadeLab8's.
 
 #include "bvh_frustum.h"
 #include "bvh_packet.h"
@@ -14,6 +15,12 @@ namespace raylab {
 
 namespace {
 
+// Frustums pay where a scene is a few large triangles (raylab-bench, 1 thread: the lab's box
+// 1.2x the packets' rays per second); for meshes of tens of thousands of triangles the walks
+// that end over kMaxFrustumCandidates cost more than they save (bunny, dragon and Sponza 0.92
+// to 0.95x), so those are traced packet by packet. Nothing was measured in between.
+constexpr std::size_t kMaxFrustumSceneTriangles = 1024;
+
 // Packets whose every lane is written before it is read: not zeroed first (RayPacket::Unset).
 template <typename Packet, std::size_t... I>
 std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
@@ -25,7 +32,7 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts) {
     static const bool simd = bvhSimdSupported();
-    if (!simd || bvh.wideNodes.empty()) {
+    if (!simd || bvh.wideNodes.empty() || bvh.leafReferences > kMaxFrustumSceneTriangles) {
         for (int k = 0; k < count; ++k) {
             shadeLab8(scene, bvh, settings, rays[k], radiance[k], counts);
         }

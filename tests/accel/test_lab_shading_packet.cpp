@@ -92,7 +92,8 @@ TEST(LabShadingPacket, LaneMasksWithGaps) {
 
 // shadeLabBlock (a block's packets traced together through frustum candidates) against
 // shadeLab8 packet by packet: blocks of 1 to 8 rows, rows of 1 to 8 lanes, lanes with gaps,
-// with and without shadows, for the box (every block culled) and a soup (some blocks too full).
+// with and without shadows, for the box (traced through frustums) and a soup of 5,000 triangles
+// (too large a scene: packet by packet).
 void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings) {
     const Bvh bvh = buildBvh(scene);
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
