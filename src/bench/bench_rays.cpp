@@ -43,6 +43,7 @@ void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& s
                    const RenderSettings& settings) {
     rays.shadow.clear();
     rays.shadowOffset.assign(1, 0);
+    rays.shadowPrimary.clear();
     for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
         for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
             if (!hits[i].found()) {
@@ -68,6 +69,7 @@ void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& s
             }
             rays.shadow.push_back(
                 Ray{point, toLight, settings.shadowEpsilon, distance - settings.shadowEpsilon});
+            rays.shadowPrimary.push_back(i);
         }
         rays.shadowOffset.push_back(rays.shadow.size());
     }

@@ -20,6 +20,8 @@ struct BenchRays {
     std::vector<std::size_t> primaryOffset; // tile i's primary rays: [offset[i], offset[i + 1])
     std::vector<Ray> shadow;                // tile-major, in the order of their primary hits
     std::vector<std::size_t> shadowOffset;  // likewise
+    std::vector<std::size_t>
+        shadowPrimary; // shadow[j] is the shadow ray of primary[shadowPrimary[j]]
     std::size_t tiles() const { return primaryOffset.empty() ? 0 : primaryOffset.size() - 1; }
     std::size_t total() const { return primary.size() + shadow.size(); }
 };

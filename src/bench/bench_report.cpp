@@ -12,6 +12,10 @@ double mrays(const BenchReport& r, double seconds) {
     return seconds > 0.0 ? static_cast<double>(r.primaryRays + r.shadowRays) / seconds * 1e-6 : 0.0;
 }
 
+double percent(std::size_t part, std::size_t whole) {
+    return whole > 0 ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
+
 std::string format(const char* pattern, double value) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, pattern, value);
@@ -79,12 +83,29 @@ void printText(std::ostream& out, const BenchReport& r) {
         << r.leafReferences << " leaf triangles\n";
     if (r.packets) {
         printFigures(out, "raylab (packets)", r, r.raylab);
+        if (r.blocks) {
+            printFigures(out, "raylab (blocks) ", r, r.raylabBlocks);
+        }
         printFigures(out, "raylab (1 ray)  ", r, r.raylabSingle);
         out << "packets / single rays: "
             << format("%.2f", r.raylabSingle.one.bestSeconds / r.raylab.one.bestSeconds)
             << " (1 thread), "
             << format("%.2f", r.raylabSingle.all.bestSeconds / r.raylab.all.bestSeconds) << " ("
             << r.threads << " threads); answers differing: " << r.packetMismatches << "\n";
+        if (r.blocks) {
+            out << "blocks / packets: "
+                << format("%.2f", r.raylab.one.bestSeconds / r.raylabBlocks.one.bestSeconds)
+                << " (1 thread), "
+                << format("%.2f", r.raylab.all.bestSeconds / r.raylabBlocks.all.bestSeconds) << " ("
+                << r.threads << " threads); answers differing from packets: " << r.blockMismatches
+                << "\n";
+            out << "blocks through frustum candidates: camera " << r.cameraBlocksThroughCandidates
+                << " of " << r.cameraBlocks << " ("
+                << format("%.1f", percent(r.cameraBlocksThroughCandidates, r.cameraBlocks))
+                << "%), shadow " << r.shadowBlocksThroughCandidates << " of " << r.shadowBlocks
+                << " (" << format("%.1f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks))
+                << "%)\n";
+        }
     } else {
         printFigures(out, "raylab", r, r.raylab);
     }
@@ -97,6 +118,13 @@ void printText(std::ostream& out, const BenchReport& r) {
         << format("%.2f", r.embree.one.bestSeconds / r.raylab.one.bestSeconds) << " (1 thread), "
         << format("%.2f", r.embree.all.bestSeconds / r.raylab.all.bestSeconds) << " (" << r.threads
         << " threads)\n";
+    if (r.blocks) {
+        out << "raylab blocks / Embree: "
+            << format("%.2f", r.embree.one.bestSeconds / r.raylabBlocks.one.bestSeconds)
+            << " (1 thread), "
+            << format("%.2f", r.embree.all.bestSeconds / r.raylabBlocks.all.bestSeconds) << " ("
+            << r.threads << " threads)\n";
+    }
     out << "closest hits disagreeing with Embree: " << r.disagreeingHits << " of " << r.primaryRays
         << "; shadow rays disagreeing: " << r.disagreeingShadows << " of " << r.shadowRays << "\n";
 }
@@ -114,6 +142,20 @@ void printJson(std::ostream& out, const BenchReport& r) {
         jsonFigures(out, r, r.raylabSingle);
         out << ", \"packet_mismatches\": " << r.packetMismatches;
     }
+    out << ", \"blocks\": " << (r.blocks ? "true" : "false");
+    if (r.blocks) {
+        out << ",\n \"raylab_blocks\": ";
+        jsonFigures(out, r, r.raylabBlocks);
+        out << ", \"block_mismatches\": " << r.blockMismatches
+            << ",\n \"camera_blocks\": " << r.cameraBlocks
+            << ", \"camera_blocks_through_candidates\": " << r.cameraBlocksThroughCandidates
+            << ", \"camera_candidate_fraction\": "
+            << format("%.4f", percent(r.cameraBlocksThroughCandidates, r.cameraBlocks) / 100.0)
+            << ", \"shadow_blocks\": " << r.shadowBlocks
+            << ", \"shadow_blocks_through_candidates\": " << r.shadowBlocksThroughCandidates
+            << ", \"shadow_candidate_fraction\": "
+            << format("%.4f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks) / 100.0);
+    }
     out << ",\n \"bvh\": {\"traversal\": " << quoted(r.traversal) << ", \"depth\": " << r.bvhDepth
         << ", \"memory_bytes\": " << r.bvhBytes << ", \"leaf_triangles\": " << r.leafReferences
         << "}";
@@ -126,6 +168,12 @@ void printJson(std::ostream& out, const BenchReport& r) {
             << format("%.4f", r.embree.all.bestSeconds / r.raylab.all.bestSeconds)
             << ", \"disagreeing_hits\": " << r.disagreeingHits
             << ", \"disagreeing_shadow_rays\": " << r.disagreeingShadows;
+        if (r.blocks) {
+            out << ", \"blocks_ratio_one_thread\": "
+                << format("%.4f", r.embree.one.bestSeconds / r.raylabBlocks.one.bestSeconds)
+                << ", \"blocks_ratio_all_threads\": "
+                << format("%.4f", r.embree.all.bestSeconds / r.raylabBlocks.all.bestSeconds);
+        }
     } else {
         out << ",\n \"embree\": null";
     }

@@ -33,6 +33,12 @@ struct BenchReport {
     bool packets = false;
     TracerFigures raylabSingle;       // single rays, timed in the same turns (when packets)
     std::size_t packetMismatches = 0; // answers where packets and single rays differ (must be 0)
+    // 8 x 8 pixel blocks through frustum candidates (bench_blocks.h), timed in the same turns.
+    bool blocks = false;
+    TracerFigures raylabBlocks;
+    std::size_t blockMismatches = 0; // answers where blocks and packets differ (must be 0)
+    std::size_t cameraBlocks = 0, cameraBlocksThroughCandidates = 0;
+    std::size_t shadowBlocks = 0, shadowBlocksThroughCandidates = 0; // blocks with shadow rays
     bool hasEmbree = false;
     std::string embreeAbsent = "not built in"; // why there are no Embree figures
     TracerFigures embree;

@@ -4,11 +4,13 @@
 // unless --width/--height say otherwise) with raylab's BVH on 1 thread and on N threads, best of
 // --frames frames, and, where Embree is built in, with Embree on the same rays, then compares
 // the two's closest hits. raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and,
-// in the same turns, single rays. Bench-only flags: --scalar (raylab's scalar reference
-// traversal instead of the SIMD one), --no-packets (single rays only), --no-embree. Exit codes:
-// 2 usage, 1 other errors, too many hits disagreeing with Embree, or packets and single rays
-// not giving identical answers.
+// in the same turns, 8 x 8 pixel blocks through frustum candidates as the renderer does
+// (core/bvh_frustum.h, bench_blocks.h) and single rays. Bench-only flags: --scalar (raylab's
+// scalar reference traversal instead of the SIMD one), --no-packets (single rays only),
+// --no-blocks, --no-embree. Exit codes: 2 usage, 1 other errors, too many hits disagreeing with
+// Embree, or packets, blocks and single rays not giving identical answers.
 
+#include "bench_blocks.h"
 #include "bench_rays.h"
 #include "bench_report.h"
 #include "bench_timing.h"
@@ -43,6 +45,7 @@ struct BenchFlags {
     bool scalar = false;
     bool noEmbree = false;
     bool noPackets = false;
+    bool noBlocks = false;
     float spatialBudget = -1.0f;  // < 0: BvhBuildOptions' default
     float presplitBudget = -1.0f; // likewise
     bool sizeGiven = false;
@@ -59,6 +62,8 @@ BenchFlags takeBenchFlags(std::vector<const char*>& args) {
             flags.noEmbree = true;
         } else if (std::strcmp(arg, "--no-packets") == 0) {
             flags.noPackets = true;
+        } else if (std::strcmp(arg, "--no-blocks") == 0) {
+            flags.noBlocks = true;
         } else if (std::strncmp(arg, "--spatial-budget=", 17) == 0) {
             flags.spatialBudget = std::stof(arg + 17);
         } else if (std::strncmp(arg, "--presplit-budget=", 18) == 0) {
@@ -136,7 +141,8 @@ int run(int argc, char** argv) {
         std::cout << usage(Program::Bench)
                   << "\nraylab-bench traces 1280x720 unless --width or --height is given.\n"
                      "  --scalar                raylab's scalar reference traversal (binary BVH)\n"
-                     "  --no-packets            single rays only (no 8-ray packets)\n"
+                     "  --no-packets            single rays only (no 8-ray packets, no blocks)\n"
+                     "  --no-blocks             no 8x8 pixel blocks through frustum candidates\n"
                      "  --spatial-budget=F      BVH spatial splits: extra references, fraction\n"
                      "  --presplit-budget=F     BVH pre-splitting: extra references, fraction\n"
                      "  --no-embree             skip Embree\n";
@@ -237,9 +243,27 @@ int run(int argc, char** argv) {
     };
     const bool packets = !flags.scalar && !flags.noPackets;
     report.packets = packets;
+    // 8 x 8 pixel blocks of the same rays, each row a packet, shadow rays in their pixel's lane,
+    // traced as the renderer does (bench_blocks.h); packed, and their answers sized, before any
+    // timing.
+    const bool blocks = packets && !flags.noBlocks;
+    report.blocks = blocks;
+    const BlockedRays blocked = blocks ? blockRays(rays) : BlockedRays{};
+    BlockAnswers blockAnswers = makeBlockAnswers(blocked);
+    const glm::vec3 light = cl.settings.light.position;
+    const bool shadowFrustum = cl.settings.shadowEpsilon >= 0.0f; // as shadeLabBlock
+    const TileTracer blockTile = [&](std::size_t tile) {
+        for (std::size_t b = blocked.blockOffset[tile]; b < blocked.blockOffset[tile + 1]; ++b) {
+            traceBlock(bvh, blocked, b, light, shadowFrustum, blockAnswers);
+        }
+    };
     // raylab and Embree take turns frame by frame, so both see the same load on a shared machine.
     std::vector<const TileTracer*> tracers{packets ? &packetTile : &singleTile};
     std::vector<TracerFigures*> figures{&report.raylab};
+    if (blocks) {
+        tracers.push_back(&blockTile);
+        figures.push_back(&report.raylabBlocks);
+    }
     if (packets) {
         tracers.push_back(&singleTile);
         figures.push_back(&report.raylabSingle);
@@ -279,21 +303,57 @@ int run(int argc, char** argv) {
 #endif
 
     if (packets) {
-        // Ray k of a tile is lane k % 8 of the tile's packet k / 8 (bench_rays.h).
+        // The packets' answer for each ray: ray k of a tile is lane k % 8 of the tile's packet
+        // k / 8 (bench_rays.h).
+        std::vector<Hit> packetHit(rays.primary.size());
+        std::vector<uint8_t> packetAnswer(rays.shadow.size());
         for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
             for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
                 const std::size_t k = i - rays.primaryOffset[tile];
-                const Hit packetHit =
-                    packetHits[packeted.primaryOffset[tile] + k / kPacketSize].hit(
-                        static_cast<int>(k % kPacketSize));
-                report.packetMismatches += std::memcmp(&hits[i], &packetHit, sizeof(Hit)) != 0;
+                packetHit[i] = packetHits[packeted.primaryOffset[tile] + k / kPacketSize].hit(
+                    static_cast<int>(k % kPacketSize));
+                report.packetMismatches +=
+                    std::memcmp(&hits[i], &packetHit[i], sizeof(Hit)) != 0 ? 1 : 0;
             }
             for (std::size_t j = rays.shadowOffset[tile]; j < rays.shadowOffset[tile + 1]; ++j) {
                 const std::size_t k = j - rays.shadowOffset[tile];
                 const unsigned answers =
                     packetOccluded[packeted.shadowOffset[tile] + k / kPacketSize];
-                const bool packetAnswer = ((answers >> (k % kPacketSize)) & 1u) != 0;
-                report.packetMismatches += (occluded[j] != 0) != packetAnswer ? 1 : 0;
+                packetAnswer[j] = ((answers >> (k % kPacketSize)) & 1u) != 0 ? 1 : 0;
+                report.packetMismatches += (occluded[j] != 0) != (packetAnswer[j] != 0) ? 1 : 0;
+            }
+        }
+        if (blocks) {
+            // Every lane of every block against the packets' answer for the same ray, bit for bit.
+            std::size_t cameraSeen = 0, shadowSeen = 0;
+            for (std::size_t p = 0; p < blocked.primary.size(); ++p) {
+                for (int lane = 0; lane < kPacketSize; ++lane) {
+                    const std::size_t slot = p * kPacketSize + static_cast<std::size_t>(lane);
+                    if (const uint32_t i = blocked.primaryRay[slot]; i != kNoRay) {
+                        const Hit blockHit = blockAnswers.hits[p].hit(lane);
+                        report.blockMismatches +=
+                            std::memcmp(&blockHit, &packetHit[i], sizeof(Hit)) != 0 ? 1 : 0;
+                        ++cameraSeen;
+                    }
+                    if (const uint32_t j = blocked.shadowRay[slot]; j != kNoRay) {
+                        const bool blockAnswer = ((blockAnswers.occluded[p] >> lane) & 1u) != 0;
+                        report.blockMismatches += blockAnswer != (packetAnswer[j] != 0) ? 1 : 0;
+                        ++shadowSeen;
+                    }
+                }
+            }
+            if (cameraSeen != rays.primary.size() || shadowSeen != rays.shadow.size()) {
+                std::cerr << "raylab-bench: the blocks hold " << cameraSeen << " camera and "
+                          << shadowSeen << " shadow rays, not " << rays.primary.size() << " and "
+                          << rays.shadow.size() << "\n";
+                return 1;
+            }
+            report.cameraBlocks = blocked.blocks();
+            for (std::size_t b = 0; b < blocked.blocks(); ++b) {
+                const uint8_t f = blockAnswers.flags[b];
+                report.cameraBlocksThroughCandidates += (f & kCameraCandidates) != 0 ? 1 : 0;
+                report.shadowBlocks += blocked.blockShadowRays[b];
+                report.shadowBlocksThroughCandidates += (f & kShadowCandidates) != 0 ? 1 : 0;
             }
         }
     }
@@ -312,6 +372,11 @@ int run(int argc, char** argv) {
     if (report.packetMismatches != 0) {
         std::cerr << "raylab-bench: " << report.packetMismatches
                   << " packet answers differ from the single-ray ones\n";
+        return 1;
+    }
+    if (report.blockMismatches != 0) {
+        std::cerr << "raylab-bench: " << report.blockMismatches
+                  << " block answers differ from the packet ones\n";
         return 1;
     }
     return 0;

@@ -1,0 +1,111 @@
+#include "bench_blocks.h"
+
+#include "core/bvh_frustum.h"
+#include "core/bvh_packet.h"
+
+#include <algorithm>
+
+namespace raylab::bench {
+
+BlockedRays blockRays(const BenchRays& rays) {
+    BlockedRays blocked;
+    // The shadow ray of each primary ray, if any.
+    std::vector<uint32_t> shadowOf(rays.primary.size(), kNoRay);
+    for (std::size_t j = 0; j < rays.shadowPrimary.size(); ++j) {
+        shadowOf[rays.shadowPrimary[j]] = static_cast<uint32_t>(j);
+    }
+    const int ts = rays.tileSize;
+    const int tilesX = (rays.width + ts - 1) / ts;
+    blocked.blockOffset.assign(1, 0);
+    for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
+        const int tx0 = static_cast<int>(tile % static_cast<std::size_t>(tilesX)) * ts;
+        const int ty0 = static_cast<int>(tile / static_cast<std::size_t>(tilesX)) * ts;
+        const int tx1 = std::min(rays.width, tx0 + ts);
+        const int ty1 = std::min(rays.height, ty0 + ts);
+        const int tileWidth = tx1 - tx0;
+        for (int y0 = ty0; y0 < ty1; y0 += kPacketSize) {
+            const int rows = std::min(kPacketSize, ty1 - y0);
+            for (int x0 = tx0; x0 < tx1; x0 += kPacketSize) {
+                const int count = std::min(kPacketSize, tx1 - x0);
+                bool anyShadow = false;
+                for (int r = 0; r < kPacketSize; ++r) {
+                    RayPacket primary;
+                    RayPacket shadow;
+                    for (int i = 0; i < kPacketSize; ++i) {
+                        uint32_t p = kNoRay;
+                        uint32_t s = kNoRay;
+                        if (r < rows && i < count) {
+                            // Row-major inside the tile (bench_rays.h).
+                            const std::size_t index =
+                                rays.primaryOffset[tile] +
+                                static_cast<std::size_t>(y0 + r - ty0) * tileWidth +
+                                static_cast<std::size_t>(x0 + i - tx0);
+                            p = static_cast<uint32_t>(index);
+                            primary.set(i, rays.primary[index]);
+                            s = shadowOf[index];
+                            if (s != kNoRay) {
+                                shadow.set(i, rays.shadow[s]);
+                                anyShadow = true;
+                            }
+                        }
+                        blocked.primaryRay.push_back(p);
+                        blocked.shadowRay.push_back(s);
+                    }
+                    blocked.primary.push_back(primary);
+                    blocked.shadow.push_back(shadow);
+                }
+                blocked.rows.push_back(static_cast<uint8_t>(rows));
+                blocked.blockShadowRays.push_back(anyShadow ? 1 : 0);
+            }
+        }
+        blocked.blockOffset.push_back(blocked.rows.size());
+    }
+    return blocked;
+}
+
+BlockAnswers makeBlockAnswers(const BlockedRays& blocked) {
+    BlockAnswers answers;
+    answers.hits.resize(blocked.primary.size());
+    answers.occluded.assign(blocked.shadow.size(), 0);
+    answers.flags.assign(blocked.blocks(), 0);
+    return answers;
+}
+
+void traceBlock(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
+                const glm::vec3& light, bool shadowFrustum, BlockAnswers& answers) {
+    static const bool simd = bvhSimdSupported();
+    const int count = blocked.rows[block];
+    const std::size_t first = block * kPacketSize;
+    const RayPacket* rays = &blocked.primary[first];
+    const RayPacket* shadowRays = &blocked.shadow[first];
+    HitPacket* hits = &answers.hits[first];
+    unsigned* occluded = &answers.occluded[first];
+    // As shadeLabBlock (core/lab_shading_block.cpp): no frustum without the 8-wide BVH.
+    const bool frusta = simd && !bvh.wideNodes.empty();
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    const bool cameraCandidates = frusta && frustumOfRays(bvh, rays, count, frustum) &&
+                                  frustumCandidates(bvh, frustum, candidates);
+    for (int k = 0; k < count; ++k) {
+        if (cameraCandidates) {
+            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
+        } else {
+            closestHit8(bvh, rays[k], hits[k]);
+        }
+    }
+    const bool shadowCandidates = frusta && shadowFrustum && blocked.blockShadowRays[block] != 0 &&
+                                  frustumOfSegments(bvh, shadowRays, count, light, frustum) &&
+                                  frustumCandidates(bvh, frustum, candidates);
+    for (int k = 0; k < count; ++k) {
+        unsigned answer = 0;
+        if (shadowRays[k].lanes != 0) {
+            answer = shadowCandidates ? anyHitCandidates(bvh, candidates, shadowRays[k])
+                                      : anyHit8(bvh, shadowRays[k]);
+        }
+        occluded[k] = answer;
+    }
+    answers.flags[block] = static_cast<uint8_t>((cameraCandidates ? kCameraCandidates : 0) |
+                                                (shadowCandidates ? kShadowCandidates : 0));
+}
+
+} // namespace raylab::bench

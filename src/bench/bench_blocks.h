@@ -1,0 +1,61 @@
+#pragma once
+// The bench's rays in 8 x 8 pixel blocks, traced as the renderer traces them
+// (core/lab_shading_block.cpp): each row of a block is one packet of its pixels' camera rays, one
+// frustum walk (core/bvh_frustum.h) collects the triangles any of them may meet, and each packet
+// tests just those (closestHit8 when the frustum fails or holds too many). The block's shadow
+// rays stay in the row and lane of their camera ray's pixel (lane masks) and share one frustum
+// towards the light likewise (anyHit8 as the fallback). The rays are BenchRays' own, repacked
+// before any timing.
+
+#include "bench_rays.h"
+#include "core/bvh.h"
+#include "core/ray_packet.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace raylab::bench {
+
+inline constexpr uint32_t kNoRay = 0xffffffffu;
+
+struct BlockedRays {
+    // Block b's rows are packets [b * kPacketSize, b * kPacketSize + rows[b]) of both vectors;
+    // a block at the image's right or bottom edge has fewer lanes or rows.
+    std::vector<RayPacket> primary;
+    std::vector<RayPacket> shadow; // lane i of row r: the shadow ray of that pixel, if any
+    std::vector<uint8_t> rows;
+    std::vector<std::size_t> blockOffset; // tile i's blocks: [offset[i], offset[i + 1])
+    // Lane i of packet p is ray primaryRay[p * kPacketSize + i] of BenchRays::primary (kNoRay:
+    // the lane is empty); likewise shadowRay for BenchRays::shadow.
+    std::vector<uint32_t> primaryRay;
+    std::vector<uint32_t> shadowRay;
+    std::vector<uint8_t> blockShadowRays; // 1 when block b has at least one shadow ray
+    std::size_t blocks() const { return rows.size(); }
+};
+
+// Tile i's pixels in blocks of 8 x 8 from its top-left corner, row of blocks by row of blocks,
+// as the renderer's accumulatePass walks a tile.
+BlockedRays blockRays(const BenchRays& rays);
+
+// What tracing a block recorded: bit kCameraCandidates of flags[b] when its camera packets went
+// through frustum candidates, kShadowCandidates likewise for its shadow packets.
+inline constexpr uint8_t kCameraCandidates = 1;
+inline constexpr uint8_t kShadowCandidates = 2;
+
+struct BlockAnswers {
+    std::vector<HitPacket> hits;    // per primary packet
+    std::vector<unsigned> occluded; // per shadow packet: bit i, lane i is occluded
+    std::vector<uint8_t> flags;     // per block
+};
+
+// Sized for `blocked`, so that tracing allocates nothing.
+BlockAnswers makeBlockAnswers(const BlockedRays& blocked);
+
+// Traces block b as shadeLabBlock does; shadow rays go through a frustum only when
+// `shadowFrustum` (the renderer's condition: shadow epsilon >= 0).
+void traceBlock(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
+                const glm::vec3& light, bool shadowFrustum, BlockAnswers& answers);
+
+} // namespace raylab::bench
