@@ -73,36 +73,20 @@ BlockAnswers makeBlockAnswers(const BlockedRays& blocked) {
 
 void traceBlock(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
                 const glm::vec3& light, bool shadowFrustum, BlockAnswers& answers) {
-    static const bool simd = bvhSimdSupported();
     const int count = blocked.rows[block];
     const std::size_t first = block * kPacketSize;
-    const RayPacket* rays = &blocked.primary[first];
     const RayPacket* shadowRays = &blocked.shadow[first];
-    HitPacket* hits = &answers.hits[first];
     unsigned* occluded = &answers.occluded[first];
-    // As shadeLabBlock (core/lab_shading_block.cpp): no frustum without the 8-wide BVH.
-    const bool frusta = simd && !bvh.wideNodes.empty();
-    RayFrustum frustum;
-    FrustumCandidates candidates;
-    const bool cameraCandidates = frusta && frustumOfRays(bvh, rays, count, frustum) &&
-                                  frustumCandidates(bvh, frustum, candidates);
-    for (int k = 0; k < count; ++k) {
-        if (cameraCandidates) {
-            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
-        } else {
-            closestHit8(bvh, rays[k], hits[k]);
+    // As shadeLabBlock (core/lab_shading_block.cpp).
+    const bool cameraCandidates =
+        closestHitBlock(bvh, &blocked.primary[first], count, &answers.hits[first]);
+    bool shadowCandidates = false;
+    if (shadowFrustum) {
+        shadowCandidates = anyHitBlock(bvh, shadowRays, count, light, occluded);
+    } else {
+        for (int k = 0; k < count; ++k) {
+            occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;
         }
-    }
-    const bool shadowCandidates = frusta && shadowFrustum && blocked.blockShadowRays[block] != 0 &&
-                                  frustumOfSegments(bvh, shadowRays, count, light, frustum) &&
-                                  frustumCandidates(bvh, frustum, candidates);
-    for (int k = 0; k < count; ++k) {
-        unsigned answer = 0;
-        if (shadowRays[k].lanes != 0) {
-            answer = shadowCandidates ? anyHitCandidates(bvh, candidates, shadowRays[k])
-                                      : anyHit8(bvh, shadowRays[k]);
-        }
-        occluded[k] = answer;
     }
     answers.flags[block] = static_cast<uint8_t>((cameraCandidates ? kCameraCandidates : 0) |
                                                 (shadowCandidates ? kShadowCandidates : 0));

@@ -63,4 +63,14 @@ void closestHitCandidates(const Bvh& bvh, const FrustumCandidates& candidates,
 unsigned anyHitCandidates(const Bvh& bvh, const FrustumCandidates& candidates,
                           const RayPacket& rays);
 
+// A block's tracing as the renderer does it: closestHit8 for each of rays[0, count) (camera
+// rays from one origin, count <= kPacketSize), through one frustum's candidates when it fits.
+// Returns true when the candidates were used.
+bool closestHitBlock(const Bvh& bvh, const RayPacket* rays, int count, HitPacket* hits);
+
+// The same for any hits: occluded[k] = anyHit8(bvh, rays[k]), for rays that run from their
+// origin towards `end` and stop short of it (frustumOfSegments' contract).
+bool anyHitBlock(const Bvh& bvh, const RayPacket* rays, int count, const glm::vec3& end,
+                 unsigned* occluded);
+
 } // namespace raylab

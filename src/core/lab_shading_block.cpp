@@ -38,40 +38,26 @@ void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& set
         }
         return;
     }
-    RayFrustum frustum;
-    FrustumCandidates candidates;
-    const bool cameraCandidates =
-        frustumOfRays(bvh, rays, count, frustum) && frustumCandidates(bvh, frustum, candidates);
     auto hits = unsetPackets<HitPacket>(std::make_index_sequence<kPacketSize>());
-    for (int k = 0; k < count; ++k) {
-        if (cameraCandidates) {
-            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
-        } else {
-            closestHit8(bvh, rays[k], hits[k]);
-        }
-        counts.primary += static_cast<std::uint64_t>(__builtin_popcount(rays[k].lanes));
-    }
-
+    closestHitBlock(bvh, rays, count, hits.data());
     ShadingBeforeShadow stages[kPacketSize];
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
-    bool anyShadowRay = false;
     for (int k = 0; k < count; ++k) {
+        counts.primary += static_cast<std::uint64_t>(laneCount(rays[k].lanes));
         beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
-        anyShadowRay = anyShadowRay || shadowRays[k].lanes != 0;
     }
     // Shadow rays run from their hit point towards the light and stop short of it (tMin =
     // epsilon >= 0, tMax = |r| - epsilon): segments ending at the light.
-    const bool shadowCandidates =
-        anyShadowRay && settings.shadowEpsilon >= 0.0f &&
-        frustumOfSegments(bvh, shadowRays.data(), count, settings.light.position, frustum) &&
-        frustumCandidates(bvh, frustum, candidates);
-    for (int k = 0; k < count; ++k) {
-        unsigned occluded = 0;
-        if (shadowRays[k].lanes != 0) {
-            occluded = shadowCandidates ? anyHitCandidates(bvh, candidates, shadowRays[k])
-                                        : anyHit8(bvh, shadowRays[k]);
+    unsigned occluded[kPacketSize];
+    if (settings.shadowEpsilon >= 0.0f) {
+        anyHitBlock(bvh, shadowRays.data(), count, settings.light.position, occluded);
+    } else {
+        for (int k = 0; k < count; ++k) {
+            occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;
         }
-        finishShade(stages[k], occluded, radiance[k]);
+    }
+    for (int k = 0; k < count; ++k) {
+        finishShade(stages[k], occluded[k], radiance[k]);
     }
 }
 

@@ -23,12 +23,7 @@ static_assert(sizeof(Triangle) == 10 * sizeof(float) && offsetof(Triangle, v1) =
 
 constexpr float kFourPi = 12.566370614359172f; // as lab_shading.cpp
 
-// Set bits of a lane mask (the POPCNT instruction where there is AVX2, not a libgcc call).
 RAYLAB_AVX2 int laneCountAvx2(unsigned lanes) { return __builtin_popcount(lanes); }
-int laneCount(unsigned lanes) {
-    static const bool simd = bvhSimdSupported();
-    return simd ? laneCountAvx2(lanes) : __builtin_popcount(lanes);
-}
 
 void shadeLanesScalar(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                       const RayPacket& rays, const HitPacket& hits, RadiancePacket& radiance,
@@ -209,8 +204,6 @@ RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settin
     }
 }
 
-} // namespace
-
 RAYLAB_AVX2 void finishShadeAvx2(const ShadingBeforeShadow& stage, unsigned occluded,
                                  RadiancePacket& radiance) {
     const __m256 shadowed = laneMask(occluded);
@@ -219,6 +212,13 @@ RAYLAB_AVX2 void finishShadeAvx2(const ShadingBeforeShadow& stage, unsigned occl
                         _mm256_blendv_ps(_mm256_load_ps(stage.lit[k]),
                                          _mm256_load_ps(stage.dark[k]), shadowed));
     }
+}
+
+} // namespace
+
+int laneCount(unsigned lanes) {
+    static const bool simd = bvhSimdSupported();
+    return simd ? laneCountAvx2(lanes) : __builtin_popcount(lanes);
 }
 
 void beginShade(const Scene& scene, const RenderSettings& settings, const RayPacket& rays,

@@ -8,6 +8,9 @@
 
 namespace raylab {
 
+// Set bits of a lane mask (the POPCNT instruction where the CPU has it).
+int laneCount(unsigned lanes);
+
 // A packet's radiance both ways the shadow test can go: `lit` for an unshadowed lane (rho * N
 // where the light does not reach it anyway), `dark` for an occluded one (rho * N); 0 in the lanes
 // without a hit.

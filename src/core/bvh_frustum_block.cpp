@@ -1,0 +1,40 @@
+// A block's packets traced through one frustum's candidates, or one by one when it does not fit
+// (bvh_frustum.h).
+
+#include "bvh_frustum.h"
+#include "bvh_packet.h"
+
+namespace raylab {
+
+bool closestHitBlock(const Bvh& bvh, const RayPacket* rays, int count, HitPacket* hits) {
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    const bool culled =
+        frustumOfRays(bvh, rays, count, frustum) && frustumCandidates(bvh, frustum, candidates);
+    for (int k = 0; k < count; ++k) {
+        if (culled) {
+            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
+        } else {
+            closestHit8(bvh, rays[k], hits[k]);
+        }
+    }
+    return culled;
+}
+
+bool anyHitBlock(const Bvh& bvh, const RayPacket* rays, int count, const glm::vec3& end,
+                 unsigned* occluded) {
+    RayFrustum frustum;
+    FrustumCandidates candidates;
+    const bool culled = frustumOfSegments(bvh, rays, count, end, frustum) &&
+                        frustumCandidates(bvh, frustum, candidates);
+    for (int k = 0; k < count; ++k) {
+        occluded[k] = 0;
+        if (rays[k].lanes != 0) {
+            occluded[k] =
+                culled ? anyHitCandidates(bvh, candidates, rays[k]) : anyHit8(bvh, rays[k]);
+        }
+    }
+    return culled;
+}
+
+} // namespace raylab
