@@ -64,6 +64,47 @@ RAYLAB_AVX2 void samplePoints8(int x0, int y, uint32_t sampleIndex, uint32_t row
     _mm256_storeu_ps(py, _mm256_add_ps(_mm256_set1_ps(static_cast<float>(y)), dy));
 }
 
+// The 8 lanes of `radiance` as 24 floats r0 g0 b0 r1 ... b7 in out[0..2]. Within each 128-bit
+// half (4 pixels), each output quarter is a blend of the channels permuted so that every value
+// sits in its output position: r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3.
+RAYLAB_AVX2 inline void interleave8(const RadiancePacket& radiance, __m256 out[3]) {
+    const __m256 r = _mm256_permute_ps(_mm256_load_ps(radiance.value[0]), _MM_SHUFFLE(1, 2, 3, 0));
+    const __m256 g = _mm256_permute_ps(_mm256_load_ps(radiance.value[1]), _MM_SHUFFLE(2, 3, 0, 1));
+    const __m256 b = _mm256_permute_ps(_mm256_load_ps(radiance.value[2]), _MM_SHUFFLE(3, 0, 1, 2));
+    const __m256 first = _mm256_blend_ps(_mm256_blend_ps(r, g, 0x22), b, 0x44);  // r g b r
+    const __m256 second = _mm256_blend_ps(_mm256_blend_ps(g, r, 0x44), b, 0x22); // g b r g
+    const __m256 third = _mm256_blend_ps(_mm256_blend_ps(b, r, 0x22), g, 0x44);  // b r g b
+    out[0] = _mm256_permute2f128_ps(first, second, 0x20); // pixels 0, 1, 2 (r g)
+    out[1] = _mm256_permute2f128_ps(third, first, 0x30);  // pixels 2 (b), 3, 4, 5 (r)
+    out[2] = _mm256_permute2f128_ps(second, third, 0x31); // pixels 5 (g b), 6, 7
+}
+
+// storeOrAdd for a full packet: the same float additions, 8 pixels at a time.
+RAYLAB_AVX2 void storeOrAdd8(const RadiancePacket& radiance, bool first, glm::vec3* row) {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+    float* out = &row[0].x;
+    __m256 values[3];
+    interleave8(radiance, values);
+    for (int k = 0; k < 3; ++k) {
+        const __m256 sum =
+            first ? values[k] : _mm256_add_ps(_mm256_loadu_ps(out + 8 * k), values[k]);
+        _mm256_storeu_ps(out + 8 * k, sum);
+    }
+}
+
+// Writes lanes [0, count) of `radiance` to row[0, count): stored when `first`, else added.
+inline void storeOrAdd(const RadiancePacket& radiance, int count, bool first, glm::vec3* row) {
+    if (first) {
+        for (int i = 0; i < count; ++i) {
+            row[i] = glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
+        }
+        return;
+    }
+    for (int i = 0; i < count; ++i) {
+        row[i] += glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
+    }
+}
+
 } // namespace
 
 bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
@@ -115,9 +156,10 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
                 shadeLabBlock(scene, bvh, settings, packets, rows, radiance, tileCounts);
                 for (int r = 0; r < rows; ++r) {
                     glm::vec3* row = &sums[static_cast<std::size_t>(y0 + r) * width + x0];
-                    for (int i = 0; i < count; ++i) {
-                        row[i] += glm::vec3(radiance[r].value[0][i], radiance[r].value[1][i],
-                                            radiance[r].value[2][i]);
+                    if (simd && count == kPacketSize) {
+                        storeOrAdd8(radiance[r], sampleIndex == 0, row);
+                    } else {
+                        storeOrAdd(radiance[r], count, sampleIndex == 0, row);
                     }
                 }
             }

@@ -30,9 +30,10 @@ struct PassOptions {
     PixelOrder displayOrder = PixelOrder::Rgba;
 };
 
-// Adds sample `sampleIndex` (0 = the pixel centre) of every pixel to sums (width * height,
-// row-major from the top), which must hold samples 0 to sampleIndex - 1. Returns false, leaving
-// sums partly updated, when cancelled.
+// Sample `sampleIndex` (0 = the pixel centre) of every pixel into sums (width * height,
+// row-major from the top): sample 0 is stored (whatever sums held before, so a new picture needs
+// no clearing), a later sample is added to sums, which must then hold samples 0 to
+// sampleIndex - 1. Returns false, leaving sums partly updated, when cancelled.
 bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                     uint32_t sampleIndex, std::span<glm::vec3> sums, RayCounts* counts = nullptr,
                     const PassOptions& options = {});

@@ -140,10 +140,12 @@ bool RenderWorker::takeLatest(ShownImage& out) {
 
 void RenderWorker::run() {
     lowerThisThreadsPriority();
-    // The accumulation: `sums` holds `samples` samples per pixel of `job` (empty: none valid).
+    // The accumulation: `sums` holds `samples` samples per pixel of `job` when `sumsValid`.
+    // Sample 0 overwrites the sums (accumulatePass), so a restart only resizes them.
     RenderJob job;
     uint64_t takenSerial = 0;
     std::vector<glm::vec3> sums;
+    bool sumsValid = false;
     uint32_t samples = 0;
     bool previewTried = false;
     double secondsPerPixel = 0.0; // measured by the last pass, 0 before any
@@ -192,13 +194,14 @@ void RenderWorker::run() {
             if (quit_) {
                 return;
             }
-            const bool restart = sums.empty() || !samePicture(job_, job) ||
+            const bool restart = !sumsValid || !samePicture(job_, job) ||
                                  static_cast<uint32_t>(job_.settings.samplesPerPixel) < samples;
             job = job_;
             serial = takenSerial = jobSerial_;
             cancel_.store(false);
             if (restart) {
-                sums.assign(pixelCount(job.settings), glm::vec3(0.0f));
+                sums.resize(pixelCount(job.settings));
+                sumsValid = true;
                 samples = 0;
                 previewTried = false;
             }
@@ -221,7 +224,7 @@ void RenderWorker::run() {
                 RenderSettings small = settings;
                 small.width = (settings.width + k - 1) / k;
                 small.height = (settings.height + k - 1) / k;
-                previewSums.assign(pixelCount(small), glm::vec3(0.0f));
+                previewSums.resize(pixelCount(small));
                 RayCounts counts;
                 const auto start = Clock::now();
                 setInPreview(true);
@@ -267,7 +270,7 @@ void RenderWorker::run() {
                 accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, full);
             setInShortFirstPass(false);
             if (!complete) {
-                sums.clear(); // partly updated: worthless, whatever the next job is
+                sumsValid = false; // partly updated: worthless, whatever the next job is
                 tally(&PassTotals::passes, -1.0);
                 continue;
             }

@@ -1,6 +1,7 @@
 // The renderer's SIMD paths against their scalar references, bit for bit: 8-lane ray generation
 // (PrimaryRays::through8 == through), 8-lane shading (shadeLab8 == shadeLab) and a whole pass
-// (every pixel of accumulatePass == shadeLab of the ray through its sample point).
+// (every pixel of accumulatePass == shadeLab of the ray through its sample point, stored or
+// added to the sums before).
 
 #include "core/bvh.h"
 #include "core/camera.h"
@@ -115,8 +116,19 @@ TEST(RenderSimd, EveryPixelOfAPassIsShadeLabOfItsSampleRay) {
     s.camera.pitchDegrees = -4.0f;
     s.threads = 2;
     const PrimaryRays rays(s.camera, s.width, s.height);
+    // Sample 0 stores over whatever the sums held; later samples add to per-pixel earlier sums.
+    const auto earlier = [&](int x, int y) {
+        return glm::vec3(0.25f * static_cast<float>(x % 7), 1.0f / static_cast<float>(y + 3),
+                         static_cast<float>((x * 31 + y) % 11) * 0.125f);
+    };
     for (uint32_t sample : {0u, 1u, 5u}) {
-        std::vector<glm::vec3> sums(static_cast<std::size_t>(s.width * s.height), glm::vec3(0.0f));
+        std::vector<glm::vec3> sums(static_cast<std::size_t>(s.width * s.height));
+        for (int y = 0; y < s.height; ++y) {
+            for (int x = 0; x < s.width; ++x) {
+                sums[static_cast<std::size_t>(y * s.width + x)] =
+                    sample == 0 ? glm::vec3(-1e30f) : earlier(x, y);
+            }
+        }
         ASSERT_TRUE(accumulatePass(scene, bvh, s, sample, sums));
         RayCounts counts;
         for (int y = 0; y < s.height; ++y) {
@@ -127,8 +139,8 @@ TEST(RenderSimd, EveryPixelOfAPassIsShadeLabOfItsSampleRay) {
                     scene, bvh, s,
                     rays.through(static_cast<float>(x) + o.dx, static_cast<float>(y) + o.dy),
                     counts);
-                // The sums started at 0, and 0 + R == R bit for bit.
-                ASSERT_TRUE(sameBits(sums[static_cast<std::size_t>(y * s.width + x)], expected))
+                const glm::vec3 sum = sample == 0 ? expected : earlier(x, y) + expected;
+                ASSERT_TRUE(sameBits(sums[static_cast<std::size_t>(y * s.width + x)], sum))
                     << x << ", " << y << " sample " << sample;
             }
         }

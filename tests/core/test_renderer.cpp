@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 #include <gtest/gtest.h>
 
@@ -97,6 +98,13 @@ TEST(Renderer, OneSampleIsTheLabsCentredRayAndMoreSamplesAverageJitteredOnes) {
         ASSERT_EQ(four.pixels[i], sums[i] * 0.25f);
     }
     EXPECT_FALSE(sameBits(one, four)) << "jittered samples must smooth the edges";
+
+    // Sample 0 stores: sums left over from another picture (or garbage) need no clearing.
+    std::vector<glm::vec3> stale(64 * 64, glm::vec3(1e30f, -7.0f, std::nanf("")));
+    for (uint32_t pass = 0; pass < 4; ++pass) {
+        ASSERT_TRUE(accumulatePass(scene, bvh, s, pass, stale));
+    }
+    ASSERT_EQ(0, std::memcmp(stale.data(), sums.data(), sums.size() * sizeof(glm::vec3)));
 }
 
 TEST(Renderer, SampleOffsetsAreCentredFirstThenDistinctInsideThePixel) {
