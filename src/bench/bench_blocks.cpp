@@ -55,6 +55,9 @@ BlockedRays blockRays(const BenchRays& rays) {
                     blocked.shadow.push_back(shadow);
                 }
                 blocked.rows.push_back(static_cast<uint8_t>(rows));
+                blocked.rect.push_back(ImageRect{
+                    static_cast<float>(x0) + 0.5f, static_cast<float>(y0) + 0.5f,
+                    static_cast<float>(x0 + count) - 0.5f, static_cast<float>(y0 + rows) - 0.5f});
                 blocked.blockShadowRays.push_back(anyShadow ? 1 : 0);
             }
         }
@@ -71,15 +74,16 @@ BlockAnswers makeBlockAnswers(const BlockedRays& blocked) {
     return answers;
 }
 
-void traceBlock(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                const glm::vec3& light, bool shadowFrustum, BlockAnswers& answers) {
+void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& blocked,
+                std::size_t block, const glm::vec3& light, bool shadowFrustum,
+                BlockAnswers& answers) {
     const int count = blocked.rows[block];
     const std::size_t first = block * kPacketSize;
     const RayPacket* shadowRays = &blocked.shadow[first];
     unsigned* occluded = &answers.occluded[first];
     // As shadeLabBlock (core/lab_shading_block.cpp).
-    const bool cameraCandidates =
-        closestHitBlock(bvh, &blocked.primary[first], count, &answers.hits[first]);
+    const bool cameraCandidates = closestHitBlock(
+        bvh, camera, blocked.rect[block], &blocked.primary[first], count, &answers.hits[first]);
     bool shadowCandidates = false;
     if (shadowFrustum) {
         shadowCandidates = anyHitBlock(bvh, shadowRays, count, light, occluded);

@@ -9,6 +9,8 @@
 
 #include "bench_rays.h"
 #include "core/bvh.h"
+#include "core/bvh_frustum.h"
+#include "core/camera.h"
 #include "core/ray_packet.h"
 
 #include <cstddef>
@@ -32,6 +34,7 @@ struct BlockedRays {
     std::vector<uint32_t> primaryRay;
     std::vector<uint32_t> shadowRay;
     std::vector<uint8_t> blockShadowRays; // 1 when block b has at least one shadow ray
+    std::vector<ImageRect> rect;          // block b's pixel centres (its rays pass through them)
     std::size_t blocks() const { return rows.size(); }
 };
 
@@ -53,9 +56,11 @@ struct BlockAnswers {
 // Sized for `blocked`, so that tracing allocates nothing.
 BlockAnswers makeBlockAnswers(const BlockedRays& blocked);
 
-// Traces block b as shadeLabBlock does; shadow rays go through a frustum only when
-// `shadowFrustum` (the renderer's condition: shadow epsilon >= 0).
-void traceBlock(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                const glm::vec3& light, bool shadowFrustum, BlockAnswers& answers);
+// Traces block b as shadeLabBlock does: its camera rays (made by `camera`) through the frustum
+// of its image rectangle; shadow rays go through a frustum only when `shadowFrustum` (the
+// renderer's condition: shadow epsilon >= 0).
+void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& blocked,
+                std::size_t block, const glm::vec3& light, bool shadowFrustum,
+                BlockAnswers& answers);
 
 } // namespace raylab::bench

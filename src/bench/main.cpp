@@ -252,9 +252,10 @@ int run(int argc, char** argv) {
     BlockAnswers blockAnswers = makeBlockAnswers(blocked);
     const glm::vec3 light = cl.settings.light.position;
     const bool shadowFrustum = cl.settings.shadowEpsilon >= 0.0f; // as shadeLabBlock
+    const PrimaryRays camera(cl.settings.camera, cl.settings.width, cl.settings.height);
     const TileTracer blockTile = [&](std::size_t tile) {
         for (std::size_t b = blocked.blockOffset[tile]; b < blocked.blockOffset[tile + 1]; ++b) {
-            traceBlock(bvh, blocked, b, light, shadowFrustum, blockAnswers);
+            traceBlock(bvh, camera, blocked, b, light, shadowFrustum, blockAnswers);
         }
     };
     // raylab and Embree take turns frame by frame, so both see the same load on a shared machine.

@@ -13,6 +13,7 @@
 // closestHit8's or anyHit8's bit for bit.
 
 #include "bvh.h"
+#include "camera.h"
 #include "ray_packet.h"
 
 #include <cstdint>
@@ -33,6 +34,12 @@ struct RayFrustum {
     float tolerance = 0.0f;
 };
 
+// The planes' outward push for a pyramid with its apex at `apex` over the scene of `bvh` (which
+// must have nodes): 4e-5 times the largest coordinate of the scene's box and the apex, about 170
+// float ulps of it (1e-5 is about 170 float ulps of a coordinate), far above the few ulps of
+// rounding in the ray arithmetic, the triangle test and the plane test.
+float frustumTolerance(const Bvh& bvh, const glm::vec3& apex);
+
 // Leaf triangles of the 8-wide BVH: triangle lane[i] of bvh.triangleBlocks[block[i]].
 struct FrustumCandidates {
     int count = 0;
@@ -45,6 +52,20 @@ struct FrustumCandidates {
 // or lies more than about 78 degrees from the group's mean direction, the BVH has no 8-wide form
 // or the CPU no AVX2.
 bool frustumOfRays(const Bvh& bvh, const RayPacket* packets, int count, RayFrustum& frustum);
+
+// A rectangle of image points in pixel units (y down, as PrimaryRays::through takes them):
+// x0 <= px <= x1 and y0 <= py <= y1.
+struct ImageRect {
+    float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+};
+
+// A pyramid holding every ray camera.through(px, py) (or through8) for (px, py) in `rect`: the
+// four planes through the camera's position and the rectangle's edges, exact in real arithmetic
+// and computed from the camera's basis alone (no ray is read). False when the BVH has no 8-wide
+// form, the CPU no AVX2, the rectangle is empty or not finite (x0 <= x1, y0 <= y1 fails), or
+// the camera gives no finite plane.
+bool frustumOfImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
+                        RayFrustum& frustum);
 
 // A pyramid with its apex at `end` holding the segment from each ray's origin to `end`, for rays
 // that run from their origin towards `end` and stop before it (tMax at most the distance to
@@ -67,6 +88,11 @@ unsigned anyHitCandidates(const Bvh& bvh, const FrustumCandidates& candidates,
 // rays from one origin, count <= kPacketSize), through one frustum's candidates when it fits.
 // Returns true when the candidates were used.
 bool closestHitBlock(const Bvh& bvh, const RayPacket* rays, int count, HitPacket* hits);
+
+// The same for rays made by camera.through8 from image points in `rect` (a block's pixels), with
+// the frustum of the rectangle (frustumOfImageRect) instead of one fitted to the rays.
+bool closestHitBlock(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
+                     const RayPacket* rays, int count, HitPacket* hits);
 
 // The same for any hits: occluded[k] = anyHit8(bvh, rays[k]), for rays that run from their
 // origin towards `end` and stop short of it (frustumOfSegments' contract).

@@ -20,10 +20,6 @@ namespace {
 
 using namespace packet_lanes;
 
-// The planes' outward push, relative to the largest coordinate of the scene's box and the apex:
-// 1e-5 is about 170 float ulps, far above the few ulps of rounding in the ray arithmetic, the
-// triangle test and the plane test.
-constexpr float kToleranceScale = 4e-5f;
 // Every ray's vector must make an angle below acos(0.2) = 78 degrees with the mean direction.
 constexpr float kMinCosine = 0.2f;
 
@@ -49,10 +45,6 @@ RAYLAB_AVX2 inline __m256 dot8(const __m256 a[3], const glm::vec3& b) {
     return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], _mm256_set1_ps(b.x)),
                                        _mm256_mul_ps(a[1], _mm256_set1_ps(b.y))),
                          _mm256_mul_ps(a[2], _mm256_set1_ps(b.z)));
-}
-
-float maxAbs(const glm::vec3& v) {
-    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
 }
 
 // The vector w of lane i of a packet: its direction (rays from the apex) or its origin minus
@@ -177,9 +169,7 @@ RAYLAB_AVX2 bool pyramidOf(const Bvh& bvh, const RayPacket* packets, int count,
         frustum.offset[4] = maxOf(far);
         frustum.planeCount = 5;
     }
-    const BvhNode& root = bvh.nodes[0];
-    frustum.tolerance =
-        kToleranceScale * std::max({maxAbs(root.lower), maxAbs(root.upper), maxAbs(apex)});
+    frustum.tolerance = frustumTolerance(bvh, apex);
     return true;
 }
 

@@ -6,11 +6,13 @@
 
 namespace raylab {
 
-bool closestHitBlock(const Bvh& bvh, const RayPacket* rays, int count, HitPacket* hits) {
-    RayFrustum frustum;
+namespace {
+
+// closestHit8 for each packet, through the candidates of `frustum` when `framed` and they fit.
+bool closestHitInFrustum(const Bvh& bvh, bool framed, const RayFrustum& frustum,
+                         const RayPacket* rays, int count, HitPacket* hits) {
     FrustumCandidates candidates;
-    const bool culled =
-        frustumOfRays(bvh, rays, count, frustum) && frustumCandidates(bvh, frustum, candidates);
+    const bool culled = framed && frustumCandidates(bvh, frustum, candidates);
     for (int k = 0; k < count; ++k) {
         if (culled) {
             closestHitCandidates(bvh, candidates, rays[k], hits[k]);
@@ -19,6 +21,21 @@ bool closestHitBlock(const Bvh& bvh, const RayPacket* rays, int count, HitPacket
         }
     }
     return culled;
+}
+
+} // namespace
+
+bool closestHitBlock(const Bvh& bvh, const RayPacket* rays, int count, HitPacket* hits) {
+    RayFrustum frustum;
+    const bool framed = frustumOfRays(bvh, rays, count, frustum);
+    return closestHitInFrustum(bvh, framed, frustum, rays, count, hits);
+}
+
+bool closestHitBlock(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
+                     const RayPacket* rays, int count, HitPacket* hits) {
+    RayFrustum frustum;
+    const bool framed = frustumOfImageRect(bvh, camera, rect, frustum);
+    return closestHitInFrustum(bvh, framed, frustum, rays, count, hits);
 }
 
 bool anyHitBlock(const Bvh& bvh, const RayPacket* rays, int count, const glm::vec3& end,

@@ -9,6 +9,7 @@
 // one ray, shadeLab8 (lab_shading_packet.cpp) for a packet of rays with the same results.
 
 #include "bvh.h"
+#include "bvh_frustum.h"
 #include "ray_packet.h"
 #include "render_settings.h"
 #include "scene.h"
@@ -71,6 +72,12 @@ void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& setting
 // blockers are found once for the block (bvh_frustum.h) where the CPU has AVX2.
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts);
+
+// The same for camera rays made by camera.through8 from image points in `rect` (the block's
+// pixels): the camera rays' frustum comes from the rectangle (frustumOfImageRect), not the rays.
+void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
+                   int count, RadiancePacket* radiance, RayCounts& counts);
 
 // The same for Ray records: radiance[i] for rays[0, count), 0 <= count <= kPacketSize.
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,

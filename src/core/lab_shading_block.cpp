@@ -27,10 +27,10 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
     return {((void)I, Packet(RayPacket::Unset{}))...};
 }
 
-} // namespace
-
-void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts) {
+// shadeLabBlock, with the camera rays' frustum from `camera` and `rect` when camera is set.
+void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
+                RadiancePacket* radiance, RayCounts& counts) {
     static const bool simd = bvhSimdSupported();
     if (!simd || bvh.wideNodes.empty() || bvh.leafReferences > kMaxFrustumSceneTriangles) {
         for (int k = 0; k < count; ++k) {
@@ -39,7 +39,11 @@ void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& set
         return;
     }
     auto hits = unsetPackets<HitPacket>(std::make_index_sequence<kPacketSize>());
-    closestHitBlock(bvh, rays, count, hits.data());
+    if (camera) {
+        closestHitBlock(bvh, *camera, rect, rays, count, hits.data());
+    } else {
+        closestHitBlock(bvh, rays, count, hits.data());
+    }
     ShadingBeforeShadow stages[kPacketSize];
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     for (int k = 0; k < count; ++k) {
@@ -59,6 +63,19 @@ void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& set
     for (int k = 0; k < count; ++k) {
         finishShade(stages[k], occluded[k], radiance[k]);
     }
+}
+
+} // namespace
+
+void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts) {
+    shadeBlock(scene, bvh, settings, nullptr, ImageRect{}, rays, count, radiance, counts);
+}
+
+void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
+                   int count, RadiancePacket* radiance, RayCounts& counts) {
+    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts);
 }
 
 } // namespace raylab

@@ -153,7 +153,13 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
                     }
                     rays.through8(px, py, count, packets[r]);
                 }
-                shadeLabBlock(scene, bvh, settings, packets, rows, radiance, tileCounts);
+                // Sample 0 is at the pixel centres; later samples anywhere in the pixels.
+                const float inset = sampleIndex == 0 ? 0.5f : 0.0f;
+                const ImageRect rect{static_cast<float>(x0) + inset, static_cast<float>(y0) + inset,
+                                     static_cast<float>(x0 + count) - inset,
+                                     static_cast<float>(y0 + rows) - inset};
+                shadeLabBlock(scene, bvh, settings, rays, rect, packets, rows, radiance,
+                              tileCounts);
                 for (int r = 0; r < rows; ++r) {
                     glm::vec3* row = &sums[static_cast<std::size_t>(y0 + r) * width + x0];
                     if (simd && count == kPacketSize) {

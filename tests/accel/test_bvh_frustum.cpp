@@ -10,6 +10,7 @@
 #include "core/cornell_box.h"
 #include "core/render_settings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
@@ -92,16 +93,20 @@ bool hasRays(const Block& block) {
     return false;
 }
 
-// Every lane of the block: closestHitCandidates == closestHit8 when the frustum fits.
-void expectCameraBlockExact(const Bvh& bvh, const Block& block, Tally& tally) {
+// Every lane of the block: closestHitCandidates == closestHit8 when the frustum fits. The
+// frustum is the one fitted to the rays, or with `camera`, the one of the image rectangle `rect`
+// the rays were made from (frustumOfImageRect).
+void expectCameraBlockExact(const Bvh& bvh, const Block& block, Tally& tally,
+                            const PrimaryRays* camera = nullptr, const ImageRect& rect = {}) {
     if (!hasRays(block)) {
         return;
     }
     ++tally.blocks;
     RayFrustum frustum;
     FrustumCandidates candidates;
-    if (!frustumOfRays(bvh, block.packets, block.count, frustum) ||
-        !frustumCandidates(bvh, frustum, candidates)) {
+    const bool framed = camera ? frustumOfImageRect(bvh, *camera, rect, frustum)
+                               : frustumOfRays(bvh, block.packets, block.count, frustum);
+    if (!framed || !frustumCandidates(bvh, frustum, candidates)) {
         return;
     }
     ++tally.withCandidates;
@@ -140,9 +145,11 @@ void expectShadowBlockExact(const Bvh& bvh, const Block& block, const glm::vec3&
     }
 }
 
-// Every block of a width x height image from `camera`, and the shadow rays towards `light`.
+// Every block of a width x height image from `camera`, its camera rays through both kinds of
+// frustum (rectTally counts the image rectangle's), and the shadow rays towards `light`.
 void expectImageExact(const Scene& scene, const Camera& camera, const glm::vec3& light,
-                      float epsilon, Tally& cameraTally, Tally& shadowTally, uint32_t seed) {
+                      float epsilon, Tally& cameraTally, Tally& rectTally, Tally& shadowTally,
+                      uint32_t seed) {
     const Bvh bvh = buildBvh(scene);
     if (bvh.wideNodes.empty()) {
         GTEST_SKIP() << "no AVX2: the frustum path is never taken";
@@ -154,6 +161,10 @@ void expectImageExact(const Scene& scene, const Camera& camera, const glm::vec3&
         for (int x0 = 0; x0 < width; x0 += kPacketSize) {
             const Block block = cameraBlock(primary, width, height, x0, y0, random);
             expectCameraBlockExact(bvh, block, cameraTally);
+            const ImageRect rect{static_cast<float>(x0), static_cast<float>(y0),
+                                 static_cast<float>(std::min(width, x0 + kPacketSize)),
+                                 static_cast<float>(std::min(height, y0 + kPacketSize))};
+            expectCameraBlockExact(bvh, block, rectTally, &primary, rect);
             expectShadowBlockExact(bvh, shadowBlock(bvh, block, light, epsilon), light,
                                    shadowTally);
             if (testing::Test::HasFatalFailure()) {
@@ -169,12 +180,14 @@ TEST(BvhFrustum, CornellBoxBlocksAreExactAndCulled) {
     }
     const RenderSettings lab;
     for (float epsilon : {1e-3f, 0.0f}) {
-        Tally cameraTally, shadowTally;
+        Tally cameraTally, rectTally, shadowTally;
         expectImageExact(makeCornellBox(), lab.camera, lab.light.position, epsilon, cameraTally,
-                         shadowTally, 7);
+                         rectTally, shadowTally, 7);
         ASSERT_FALSE(HasFatalFailure());
         // The box's 30 large triangles: every block's frustum holds few of them.
         EXPECT_EQ(cameraTally.withCandidates, cameraTally.blocks);
+        EXPECT_EQ(rectTally.withCandidates, rectTally.blocks);
+        EXPECT_EQ(rectTally.hits, cameraTally.hits);
         EXPECT_GT(shadowTally.withCandidates, shadowTally.blocks * 3 / 4)
             << shadowTally.withCandidates << " of " << shadowTally.blocks;
         EXPECT_GT(cameraTally.hits, 3000);
@@ -190,20 +203,24 @@ TEST(BvhFrustum, RandomCamerasOnSoupsHeightFieldAndSphere) {
                             makeHeightField(12, 5), makeClosedSphere(8, 12, 0.8f, 0.05f, 6)};
     std::mt19937 random(11);
     std::uniform_real_distribution<float> position(-2.5f, 2.5f);
-    Tally cameraTally, shadowTally;
+    // Narrow to nearly flat fields of view: the rectangle's planes come from the focal length.
+    const float fovs[] = {50.0f, 100.0f, 0.5f, 170.0f};
+    Tally cameraTally, rectTally, shadowTally;
     for (const Scene& scene : scenes) {
         for (int view = 0; view < 4; ++view) {
             Camera camera;
             camera.position = {position(random), position(random), position(random)};
             lookAt(camera, {0.1f * position(random), 0.1f * position(random), 0.0f});
-            camera.verticalFovDegrees = view % 2 == 0 ? 50.0f : 100.0f;
+            camera.verticalFovDegrees = fovs[view];
             const glm::vec3 light{position(random), 2.0f, position(random)};
-            expectImageExact(scene, camera, light, 1e-3f, cameraTally, shadowTally,
+            expectImageExact(scene, camera, light, 1e-3f, cameraTally, rectTally, shadowTally,
                              static_cast<uint32_t>(view));
             ASSERT_FALSE(HasFatalFailure());
         }
     }
     EXPECT_GT(cameraTally.withCandidates, cameraTally.blocks / 4);
+    EXPECT_GT(rectTally.withCandidates, rectTally.blocks / 4);
+    EXPECT_GT(rectTally.hits, 10000);
     EXPECT_GT(shadowTally.withCandidates, 0);
     EXPECT_GT(cameraTally.hits, 10000);
     EXPECT_GT(shadowTally.hits, 1000);
@@ -224,11 +241,12 @@ TEST(BvhFrustum, FarFromTheOriginStaysExact) {
     const RenderSettings lab;
     Camera camera = lab.camera;
     camera.position += offset;
-    Tally cameraTally, shadowTally;
-    expectImageExact(scene, camera, lab.light.position + offset, 1e-3f, cameraTally, shadowTally,
-                     9);
+    Tally cameraTally, rectTally, shadowTally;
+    expectImageExact(scene, camera, lab.light.position + offset, 1e-3f, cameraTally, rectTally,
+                     shadowTally, 9);
     ASSERT_FALSE(HasFatalFailure());
     EXPECT_EQ(cameraTally.withCandidates, cameraTally.blocks);
+    EXPECT_EQ(rectTally.withCandidates, rectTally.blocks);
     EXPECT_GT(cameraTally.hits, 3000);
 }
 
@@ -262,6 +280,11 @@ TEST(BvhFrustum, TriangleAlongTheBlockEdgeIsKeptOneBesideItCulled) {
     const Bvh bvh = buildBvh(scene);
     RayFrustum frustum;
     FrustumCandidates candidates;
+    // The rays are through the pixels' corners: the rectangle's left edge holds the left column.
+    const ImageRect rect{16.0f, 16.0f, 16.0f + kPacketSize - 1, 16.0f + kPacketSize - 1};
+    ASSERT_TRUE(frustumOfImageRect(bvh, primary, rect, frustum));
+    ASSERT_TRUE(frustumCandidates(bvh, frustum, candidates));
+    ASSERT_EQ(candidates.count, 1);
     ASSERT_TRUE(frustumOfRays(bvh, block.packets, block.count, frustum));
     ASSERT_TRUE(frustumCandidates(bvh, frustum, candidates));
     ASSERT_EQ(candidates.count, 1);
@@ -320,6 +343,19 @@ TEST(BvhFrustum, RefusedWhereTheContractDoesNotHold) {
     block.packets[0].direction[0][7] = kNaN;
     block.packets[0].lanes = 0x7f;
     EXPECT_TRUE(frustumOfRays(bvh, block.packets, block.count, frustum));
+
+    // The image rectangle: refused when empty, not finite, or the camera is not finite.
+    EXPECT_TRUE(frustumOfImageRect(bvh, primary, ImageRect{0, 0, 8, 2}, frustum));
+    EXPECT_EQ(frustum.planeCount, 4);
+    EXPECT_TRUE(frustumOfImageRect(bvh, primary, ImageRect{3, 1, 3, 1}, frustum)); // one point
+    EXPECT_FALSE(frustumOfImageRect(bvh, primary, ImageRect{8, 0, 0, 2}, frustum));
+    EXPECT_FALSE(frustumOfImageRect(bvh, primary, ImageRect{0, 0, kNaN, 2}, frustum));
+    PrimaryRays broken = primary;
+    broken.origin.y = kNaN;
+    EXPECT_FALSE(frustumOfImageRect(bvh, broken, ImageRect{0, 0, 8, 2}, frustum));
+    broken = primary;
+    broken.forward.x = std::numeric_limits<float>::infinity();
+    EXPECT_FALSE(frustumOfImageRect(bvh, broken, ImageRect{0, 0, 8, 2}, frustum));
 
     block = fresh();
     EXPECT_TRUE(frustumOfSegments(bvh, block.packets, block.count, lab.light.position, frustum));
