@@ -48,7 +48,14 @@ InputEvents InputCollector::take() {
 void InputCollector::onKey(GLFWwindow* window, int key, int, int action, int) {
     InputEvents& events = collectorOf(window)->events_;
     events.keyboard = true;
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+    if (const auto navAction = navActionForKey(key)) {
+        // Held keys move by the time they are held; their repeats would move them twice.
+        if (action == GLFW_PRESS || action == GLFW_RELEASE) {
+            const auto kind =
+                action == GLFW_PRESS ? NavKeyChange::Kind::Press : NavKeyChange::Kind::Release;
+            events.navKeys.push_back({kind, *navAction, std::chrono::steady_clock::now()});
+        }
+    } else if (action == GLFW_PRESS || action == GLFW_REPEAT) {
         events.keys.push_back(key);
     }
 }
@@ -77,7 +84,16 @@ void InputCollector::onCursor(GLFWwindow* window, double, double) {
 
 void InputCollector::onEnter(GLFWwindow* window, int) { collectorOf(window)->events_.other = true; }
 
-void InputCollector::onFocus(GLFWwindow* window, int) { collectorOf(window)->events_.other = true; }
+void InputCollector::onFocus(GLFWwindow* window, int focused) {
+    InputEvents& events = collectorOf(window)->events_;
+    events.other = true;
+    if (focused == GLFW_FALSE) {
+        NavKeyChange lost;
+        lost.kind = NavKeyChange::Kind::FocusLost;
+        lost.when = std::chrono::steady_clock::now();
+        events.navKeys.push_back(lost);
+    }
+}
 
 void InputCollector::onSize(GLFWwindow* window, int, int) {
     collectorOf(window)->events_.other = true;

@@ -4,9 +4,14 @@
 // release within one frame (as xdotool sends them) is never lost. Every input or window event
 // (also releases, characters, cursor moves, focus, resize, expose, minimise) is noted, so the
 // window knows that a frame is wanted (redraw_schedule.h).
+//
+// The navigation keys (navActionForKey) are recorded apart, as presses and releases with the time
+// they arrived, for held_keys.h: a held key moves smoothly, so their key repeats are dropped.
+// Losing the focus is recorded among them (GLFW does not always send the releases then).
 
 #include "navigation.h"
 
+#include <chrono>
 #include <optional>
 #include <vector>
 
@@ -16,12 +21,23 @@ namespace raylab::viewer {
 
 enum class Command { Screenshot, Quit, TogglePanel };
 
+// A change of the held navigation keys: a navigation key went down or up, or the window lost
+// the focus (every key counts as up then).
+struct NavKeyChange {
+    enum class Kind { Press, Release, FocusLost };
+    Kind kind = Kind::Press;
+    NavAction action = NavAction::CameraForward; // Press and Release only
+    std::chrono::steady_clock::time_point when;  // when the callback saw it
+};
+
 struct InputEvents {
-    std::vector<int> keys;    // GLFW key codes of presses and repeats, in order
-    double scroll = 0.0;      // wheel notches, positive = away from the user
-    bool leftPressed = false; // the left button went down
-    bool keyboard = false;    // a key event (press, repeat, release) or a character arrived
-    bool other = false;       // a mouse, cursor or window event arrived
+    // GLFW key codes of the presses and repeats of the keys that do not navigate, in order.
+    std::vector<int> keys;
+    std::vector<NavKeyChange> navKeys; // the navigation keys' changes, in order; no repeats
+    double scroll = 0.0;               // wheel notches, positive = away from the user
+    bool leftPressed = false;          // the left button went down
+    bool keyboard = false;             // a key (press, repeat, release) or a character arrived
+    bool other = false;                // a mouse, cursor or window event arrived
 };
 
 class InputCollector {

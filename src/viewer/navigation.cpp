@@ -35,23 +35,25 @@ void moveCamera(float distance, RenderSettings& settings) {
     settings.camera.position += distance * forwardOf(settings.camera);
 }
 
-void applyNavAction(NavAction action, float step, RenderSettings& settings) {
+void applyNavAction(NavAction action, float step, RenderSettings& settings, float steps) {
     const glm::mat3 axes = worldFromCamera(settings.camera);
     const glm::vec3 forward = horizontal(axes[2], glm::vec3(0.0f, 0.0f, 1.0f));
     const glm::vec3 right = horizontal(axes[0], glm::vec3(-1.0f, 0.0f, 0.0f));
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
     glm::vec3& light = settings.light.position;
+    const float distance = steps * step;
+    const float degrees = steps * kTurnStepDegrees;
     switch (action) {
-    case NavAction::CameraForward: moveCamera(step, settings); break;
-    case NavAction::CameraBack: moveCamera(-step, settings); break;
-    case NavAction::TurnLeft: turnCamera(kTurnStepDegrees, 0.0f, settings); break;
-    case NavAction::TurnRight: turnCamera(-kTurnStepDegrees, 0.0f, settings); break;
-    case NavAction::LightForward: light += step * forward; break;
-    case NavAction::LightBack: light -= step * forward; break;
-    case NavAction::LightLeft: light -= step * right; break;
-    case NavAction::LightRight: light += step * right; break;
-    case NavAction::LightDown: light -= step * up; break;
-    case NavAction::LightUp: light += step * up; break;
+    case NavAction::CameraForward: moveCamera(distance, settings); break;
+    case NavAction::CameraBack: moveCamera(-distance, settings); break;
+    case NavAction::TurnLeft: turnCamera(degrees, 0.0f, settings); break;
+    case NavAction::TurnRight: turnCamera(-degrees, 0.0f, settings); break;
+    case NavAction::LightForward: light += distance * forward; break;
+    case NavAction::LightBack: light -= distance * forward; break;
+    case NavAction::LightLeft: light -= distance * right; break;
+    case NavAction::LightRight: light += distance * right; break;
+    case NavAction::LightDown: light -= distance * up; break;
+    case NavAction::LightUp: light += distance * up; break;
     }
 }
 

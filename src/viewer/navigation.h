@@ -9,7 +9,7 @@ namespace raylab::viewer {
 enum class NavAction {
     CameraForward, // Up: along the view direction
     CameraBack,    // Down
-    TurnLeft,      // Left: yaw up by kTurnStepDegrees
+    TurnLeft,      // Left: yaw up by kTurnStepDegrees per step
     TurnRight,     // Right
     LightForward,  // W: along the view direction projected on the ground (xz) plane
     LightBack,     // S
@@ -22,8 +22,9 @@ enum class NavAction {
 inline constexpr float kTurnStepDegrees = 5.0f;
 inline constexpr float kMaxPitchDegrees = 89.0f;
 
-// Applies one key press (or key repeat) to the settings.
-void applyNavAction(NavAction action, float step, RenderSettings& settings);
+// Moves what `action` moves by `steps` steps (fractional while a key is held, held_keys.h): by
+// steps * step world units, or, turning, by steps * kTurnStepDegrees. One key press is one step.
+void applyNavAction(NavAction action, float step, RenderSettings& settings, float steps = 1.0f);
 
 // Turns the camera: yaw (positive = left) wrapped to (-180, 180], pitch (positive = up) clamped to
 // +-kMaxPitchDegrees.

@@ -12,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include "core/scene_framing.h"
 #include "gl_window.h"
+#include "held_keys.h"
 #include "image_quad.h"
 #include "input.h"
 #include "key_relay.h"
@@ -56,9 +57,31 @@ int renderSide(int framebufferSide, float scale) {
     return static_cast<int>(std::clamp(side, 1L, static_cast<long>(kMaxImageSide)));
 }
 
-// Keys, wheel and drag of this frame applied to the settings (those ImGui wants go to ImGui).
-void applyInput(const InputEvents& events, GLFWwindow* window, float step, int framebufferHeight,
-                MouseDrag& drag, PanelState& panel, bool& showPanel, int& screenshots, bool& quit) {
+// The navigation keys' presses and releases of this frame, handed to `held`. Presses while ImGui
+// wants the keyboard are its own; then no key stays held either.
+void trackHeldKeys(const std::vector<NavKeyChange>& changes, bool panelHasKeyboard,
+                   Clock::time_point now, HeldKeys& held) {
+    for (const NavKeyChange& change : changes) {
+        switch (change.kind) {
+        case NavKeyChange::Kind::Press:
+            if (!panelHasKeyboard) {
+                held.press(change.action, change.when);
+            }
+            break;
+        case NavKeyChange::Kind::Release: held.release(change.action, change.when); break;
+        case NavKeyChange::Kind::FocusLost: held.releaseAll(change.when); break;
+        }
+    }
+    if (panelHasKeyboard) {
+        held.releaseAll(now);
+    }
+}
+
+// Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
+// ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
+void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
+                int framebufferHeight, HeldKeys& held, MouseDrag& drag, PanelState& panel,
+                bool& showPanel, int& screenshots, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     RenderSettings next = panel.settings;
     for (const int key : events.keys) {
@@ -70,9 +93,11 @@ void applyInput(const InputEvents& events, GLFWwindow* window, float step, int f
             } else if (!io.WantCaptureKeyboard) {
                 quit = true;
             }
-        } else if (const auto action = navActionForKey(key); action && !io.WantCaptureKeyboard) {
-            applyNavAction(*action, step, next);
         }
+    }
+    trackHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, held);
+    for (const NavMotion& motion : held.advance(now)) {
+        applyNavAction(motion.action, step, next, motion.steps);
     }
     if (!io.WantCaptureMouse && events.scroll != 0.0) {
         moveCamera(static_cast<float>(events.scroll) * step, next);
@@ -128,6 +153,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
+    HeldKeys held; // the navigation keys held down
     MouseDrag drag;
     ShownImage shown;
     RenderJob submitted;
@@ -173,7 +199,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             // change wakes the window again); keys for the panel get ImGui's frames.
             schedule.want(wokeAt, ImGui::GetIO().WantCaptureKeyboard ? kFramesAfterEvent : 1);
         }
-        if (keys.holding() || quit) {
+        // Key events held back for later frames, a held navigation key (it moves the camera or
+        // the light every frame) and quitting need the next frame.
+        if (keys.holding() || held.anyHeld() || quit) {
             schedule.want(wokeAt);
         }
 
@@ -240,8 +268,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                                shown.raysPerSecond};
             pictureToUpload = false;
         }
-        applyInput(input.take(), window.handle(), step, fbHeight, drag, panel, showPanel,
-                   screenshots, quit);
+        applyInput(input.take(), wokeAt, window.handle(), step, fbHeight, held, drag, panel,
+                   showPanel, screenshots, quit);
         if (showPanel) {
             panelNumbers.update(numbers, wokeAt);
             PanelView view;
@@ -322,8 +350,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             break;
         }
         // What Dear ImGui needs next: a held button (a drag, a slider) follows the cursor every
-        // frame; an active text field blinks its cursor.
-        if (ImGui::IsAnyMouseDown()) {
+        // frame; an active text field blinks its cursor. A held navigation key moves every frame.
+        if (ImGui::IsAnyMouseDown() || held.anyHeld()) {
             schedule.want(now);
         }
         // The panel shows the last picture's numbers once their refresh comes, even when

@@ -91,7 +91,8 @@ std::string viewerUsage() {
            "). With --frames N and --screenshot or --readback, the viewer shows at least N frames\n"
            "and keeps going until the picture has reached the sample cap, then saves and quits.\n"
            "Keys: Up/Down move, Left/Right turn, W/S A/D Q/E move the light, mouse drag turns,\n"
-           "wheel moves, F12 screenshot, F1 panel, Escape quits.\n";
+           "wheel moves, F12 screenshot, F1 panel, Escape quits. A key press moves one step; a\n"
+           "key held longer than 0.25 s moves smoothly, 25 steps a second, until released.\n";
 }
 
 } // namespace raylab::viewer

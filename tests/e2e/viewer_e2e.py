@@ -32,6 +32,8 @@ SKIP = 77
 XVFB_SERVER_ARGS = "-screen 0 1280x800x24"
 STEP = 0.1  # core's navigationStep for the lab's box
 TURN_DEGREES = 5.0  # the viewer's kTurnStepDegrees
+HOLD_DELAY = 0.25  # the viewer's kHoldDelaySeconds: a held key moves smoothly from then on
+HELD_STEPS_PER_SECOND = 25.0  # the viewer's kHeldStepsPerSecond
 
 
 # --- tests without a window -----------------------------------------------------------------
@@ -166,6 +168,50 @@ def test_keys_and_buttons(env):
     check(leftovers == [], f"files left beside the screenshots: {leftovers}")
 
 
+def test_held_key(env):
+    """Holding Up moves the camera smoothly: one step at the press, then HELD_STEPS_PER_SECOND
+    from HOLD_DELAY after it until the release, whatever X's key repeat does (it starts after
+    660 ms, 25 a second; the viewer ignores it), and nothing after the release."""
+    viewer = Viewer(env, ["--width", "400", "--height", "300", "--spp", "1"])
+    try:
+        _, s0 = viewer.key_shot()
+        before_press = time.monotonic()
+        viewer.xdotool("keydown", "Up")
+        after_press = time.monotonic()
+        time.sleep(1.0)
+        before_release = time.monotonic()
+        viewer.xdotool("keyup", "Up")
+        after_release = time.monotonic()
+        time.sleep(0.3)
+        _, s1 = viewer.key_shot()
+        c0, c1 = vec(s0, "camera"), vec(s1, "camera")
+        check(close(c1[0], c0[0]) and close(c1[1], c0[1]) and s1["camera"] == {
+            **s0["camera"], "position": c1}, f"holding Up moved the camera {c0} -> {c1} off +z")
+        steps = (c1[2] - c0[2]) / STEP
+        # The hold as X saw it lies between these two; the viewer's frames add a little either way.
+        shortest = before_release - after_press
+        longest = after_release - before_press
+        least = 1 + HELD_STEPS_PER_SECOND * (shortest - HOLD_DELAY)
+        most = 1 + HELD_STEPS_PER_SECOND * (longest - HOLD_DELAY)
+        print(f"held Up for {shortest:.3f}..{longest:.3f} s: {steps:.2f} steps, "
+              f"expected {least:.2f}..{most:.2f}")
+        # Slack for a loaded machine: a quarter of a second either way (a stall counts at most
+        # 0.1 s). A tap would give 1 step; X's repeats alone about 9; repeats on top of the
+        # smooth motion about 9 more than expected.
+        slack = HELD_STEPS_PER_SECOND * 0.25
+        check(least - slack <= steps <= most + slack,
+              f"holding Up for {shortest:.2f}..{longest:.2f} s moved {steps:.2f} steps, expected "
+              f"{least:.1f}..{most:.1f} (1 step, then {HELD_STEPS_PER_SECOND:g} a second from "
+              f"{HOLD_DELAY} s after the press)")
+        time.sleep(0.5)
+        _, s2 = viewer.key_shot()
+        check(s2["camera"] == s1["camera"],
+              f"the camera kept moving after the release: {s1['camera']} -> {s2['camera']}")
+        viewer.quit()
+    finally:
+        viewer.kill()
+
+
 def test_mouse(env):
     """A drag outside the panel turns the camera (right: yaw up, the view turns left; down: pitch
     up); the wheel moves it forward; a drag that starts on the panel does not turn it."""
@@ -248,6 +294,7 @@ TESTS = {
     "readback_matches_cpu": (test_readback_matches_cpu, True),
     "frames_quit": (test_frames_quit, True),
     "keys_and_buttons": (test_keys_and_buttons, True),
+    "held_key": (test_held_key, True),
     "mouse": (test_mouse, True),
     "resize": (test_resize, True),
     "close_in_flight": (test_close_in_flight, True),

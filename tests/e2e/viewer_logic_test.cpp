@@ -250,6 +250,19 @@ TEST(ViewerNavigation, KeysMoveWhatTheySay) {
     EXPECT_NEAR(s.camera.yawDegrees, kTurnStepDegrees + 40.0f, 1e-4f);
 }
 
+TEST(ViewerNavigation, FractionalStepsScaleMovesAndTurns) {
+    RenderSettings s;
+    applyNavAction(NavAction::CameraForward, 0.1f, s, 2.5f);
+    EXPECT_NEAR(s.camera.position.z, -2.75f, 1e-6f);
+    applyNavAction(NavAction::LightUp, 0.1f, s, 0.25f);
+    EXPECT_NEAR(s.light.position.y, 0.525f, 1e-6f);
+    applyNavAction(NavAction::TurnRight, 0.1f, s, 0.5f);
+    EXPECT_NEAR(s.camera.yawDegrees, -0.5f * kTurnStepDegrees, 1e-6f);
+    applyNavAction(NavAction::TurnLeft, 0.1f, s, 3.0f);
+    EXPECT_NEAR(s.camera.yawDegrees, 2.5f * kTurnStepDegrees, 1e-5f);
+    EXPECT_NEAR(s.camera.position.z, -2.75f, 1e-6f); // turning does not move
+}
+
 TEST(ViewerScreenshot, NumberedNamesNeverOverwrite) {
     namespace fs = std::filesystem;
     const fs::path dir =
