@@ -36,6 +36,8 @@ std::string runStatsJson(const RunStats& stats) {
         {"window_fps", fps},
         {"pictures_shown", stats.uploads.count},
         {"pictures_per_second", perSecond(stats.uploads.count)},
+        {"views_shown", stats.viewsShown},
+        {"views_per_second", perSecond(stats.viewsShown)},
         {"frame_ms",
          {{"mean", stats.frameResponses.mean() * 1000.0},
           {"max", stats.frameResponses.max * 1000.0}}},

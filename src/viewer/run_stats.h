@@ -36,6 +36,10 @@ struct RunStats {
     uint64_t slowFrames = 0; // frame responses longer than 1/30 s
     Tally drawTimes;         // the UI thread's time per frame, from its start to after the swap
     Tally uploads;           // texture uploads, one per new picture shown (CPU side)
+    // New pictures shown of another view than the picture before (render_worker.h's
+    // samePicture: camera, light, shadows, indirect light, scene or size changed; a preview
+    // counts at full size): while the camera moves, how many of its positions the window showed.
+    uint64_t viewsShown = 0;
     PassTotals tracer;
     // The last picture shown: its render resolution and samples per pixel (0 for a preview).
     int width = 0;
@@ -47,10 +51,10 @@ struct RunStats {
 
 // The JSON text --stats writes: redraw ("on demand" or "continuous"), frames_shown, seconds,
 // window_fps (frames drawn per second), pictures_shown (new pictures of the tracer drawn),
-// pictures_per_second, frame_ms {mean, max} (frame responses), frames_over_33ms, draw_ms {mean,
-// max}, minimised_seconds, upload_ms {count, mean, max}, passes, pass_ms {mean, min, max},
-// previews, preview_ms {mean, min, max}, cancelled_passes, samples, render_width, render_height,
-// scene, triangles. Times in milliseconds unless named seconds.
+// pictures_per_second, views_shown, views_per_second, frame_ms {mean, max} (frame responses),
+// frames_over_33ms, draw_ms {mean, max}, minimised_seconds, upload_ms {count, mean, max}, passes,
+// pass_ms {mean, min, max}, previews, preview_ms {mean, min, max}, cancelled_passes, samples,
+// render_width, render_height, scene, triangles. Times in milliseconds unless named seconds.
 std::string runStatsJson(const RunStats& stats);
 
 // Writes runStatsJson to `path` atomically; false with a one-line error.

@@ -153,7 +153,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
-    HeldKeys held; // the navigation keys held down
+    HeldKeys held;      // the navigation keys held down
+    RenderJob lastView; // the view of the last picture shown (for stats.viewsShown)
     MouseDrag drag;
     ShownImage shown;
     RenderJob submitted;
@@ -255,6 +256,13 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         if (pictureToUpload) {
             quad.upload(shown.bgra);
             stats.uploads.add(quad.lastUploadSeconds());
+            RenderJob view{shown.scene, shown.settings};
+            view.settings.width = shown.bgra.width; // a preview's view at its shown size
+            view.settings.height = shown.bgra.height;
+            if (!samePicture(view, lastView)) {
+                ++stats.viewsShown;
+                lastView = view;
+            }
             if (shown.passSeconds > 0.0) {
                 numbers.passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
             }

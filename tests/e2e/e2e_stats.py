@@ -18,7 +18,7 @@ def test_stats(env):
                             "--frames", "20", "--screenshot", "s.png", "--stats", "stats.json"])
     stats = json.load(open(env.path("stats.json")))
     for key in ["redraw", "frames_shown", "seconds", "window_fps", "pictures_shown",
-                "pictures_per_second", "frame_ms", "frames_over_33ms", "draw_ms",
+                "pictures_per_second", "views_shown", "views_per_second", "frame_ms", "frames_over_33ms", "draw_ms",
                 "minimised_seconds", "upload_ms", "passes", "pass_ms", "previews", "preview_ms",
                 "cancelled_passes", "samples", "render_width", "render_height", "scene",
                 "triangles"]:
@@ -28,6 +28,7 @@ def test_stats(env):
     check(1 <= stats["pictures_shown"] <= stats["frames_shown"],
           f"pictures_shown {stats['pictures_shown']}, frames_shown {stats['frames_shown']}")
     check(stats["seconds"] > 0 and stats["window_fps"] > 0, f"no frame rate: {stats}")
+    check(stats["views_shown"] == 1, f"views_shown {stats['views_shown']} for one view: {stats}")
     check(stats["passes"] >= 4 and stats["samples"] == 4, f"passes or samples: {stats}")
     check((stats["render_width"], stats["render_height"]) == (200, 150),
           f"render size {stats['render_width']}x{stats['render_height']}")
@@ -74,6 +75,7 @@ def test_idle(env):
     check(stats["redraw"] == "on demand", f"an interactive run redraws {stats['redraw']}")
     check(stats["seconds"] > 7.0, f"the window was shown only {stats['seconds']} s")
     check(stats["pictures_shown"] >= 2, f"pictures_shown {stats['pictures_shown']}: {stats}")
+    check(stats["views_shown"] == 2, f"views_shown {stats['views_shown']} for two views: {stats}")
     check(stats["frames_shown"] <= stats["pictures_shown"] + EVENT_FRAMES,
           f"{stats['frames_shown']} frames for {stats['pictures_shown']} pictures in "
           f"{stats['seconds']:.1f} s: the idle window kept redrawing ({stats})")

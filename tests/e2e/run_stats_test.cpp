@@ -32,6 +32,7 @@ TEST(ViewerRunStats, JsonHasRatesInFramesPerSecondAndTimesInMilliseconds) {
     stats.uploads.add(0.001);
     stats.uploads.add(0.001);
     stats.slowFrames = 1;
+    stats.viewsShown = 2;
     stats.tracer.passes.add(0.010);
     stats.tracer.passes.add(0.030);
     stats.tracer.cancelled = 4;
@@ -46,6 +47,8 @@ TEST(ViewerRunStats, JsonHasRatesInFramesPerSecondAndTimesInMilliseconds) {
     EXPECT_DOUBLE_EQ(json["window_fps"].get<double>(), 30.0);
     EXPECT_EQ(json["pictures_shown"], 3);
     EXPECT_DOUBLE_EQ(json["pictures_per_second"].get<double>(), 1.5);
+    EXPECT_EQ(json["views_shown"], 2);
+    EXPECT_DOUBLE_EQ(json["views_per_second"].get<double>(), 1.0);
     EXPECT_DOUBLE_EQ(json["frame_ms"]["max"].get<double>(), 40.0);
     EXPECT_DOUBLE_EQ(json["draw_ms"]["mean"].get<double>(), 4.0);
     EXPECT_EQ(json["frames_over_33ms"], 1);
