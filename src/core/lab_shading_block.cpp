@@ -48,7 +48,7 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     for (int k = 0; k < count; ++k) {
         counts.primary += static_cast<std::uint64_t>(laneCount(rays[k].lanes));
-        beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
+        beginShade(scene, bvh, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
     }
     // Shadow rays run from their hit point towards the light and stop short of it (tMin =
     // epsilon >= 0, tMax = |r| - epsilon): segments ending at the light.

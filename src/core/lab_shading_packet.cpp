@@ -3,7 +3,9 @@
 // CPU has AVX2, the 8 lanes run those stages' operations side by side (shadeLanesAvx2), each
 // rounded as the scalar stage rounds it (IEEE single precision, no contraction: core builds with
 // -ffp-contract=off), so the radiance is bit for bit the scalar path's (tests/core checks it).
-// Rays, hits and shadow rays stay in structure-of-arrays form (ray_packet.h) throughout.
+// The normals are read from the Bvh's shading records (bvh.h: geometricNormal's own results)
+// where it has them. Rays, hits and shadow rays stay in structure-of-arrays form (ray_packet.h)
+// throughout.
 
 #include "bvh_packet.h"
 #include "lab_shading.h"
@@ -11,15 +13,17 @@
 #include "watertight_avx2.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace raylab {
 
 namespace {
 
-// The layout shadeLanesAvx2's triangle loads assume: v0, v1, v2 and the material are 10 floats,
-// so 4 floats from v0, v1 or v2 stay inside the record.
+// The layout computeNormals' triangle loads assume: v0, v1, v2 and the material are 10 floats,
+// so 4 floats from v0, v1 or v2 stay inside the record, and the 4 from v2 end with the material.
 static_assert(sizeof(Triangle) == 10 * sizeof(float) && offsetof(Triangle, v1) == 12 &&
-              offsetof(Triangle, v2) == 24);
+              offsetof(Triangle, v2) == 24 && offsetof(Triangle, material) == 36);
 
 constexpr float kFourPi = 12.566370614359172f; // as lab_shading.cpp
 
@@ -73,9 +77,28 @@ RAYLAB_AVX2 inline __m256 laneMask(unsigned lanes) {
         _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(lanes)), bits), bits));
 }
 
-// out[axis] = the vector at rows[lane] + offset for the 8 lanes: 8 unaligned 4-float loads
-// (the fourth float is read and dropped) and a transpose, cheaper than gathers.
-RAYLAB_AVX2 inline void loadVectors(const float* const rows[8], int offset, __m256 out[3]) {
+// Row k of a packet's field of 3 rows (RayPacket::origin, ...). Loaded where used: GCC copies
+// a loop of such loads into a local array through the stack.
+RAYLAB_AVX2 inline __m256 load3(const float rows[3][kPacketSize], int k) {
+    return _mm256_load_ps(rows[k]);
+}
+
+// rows = v. Written out: GCC turns a loop of such stores into a copy through the stack.
+RAYLAB_AVX2 inline void store3(float rows[3][kPacketSize], const __m256 v[3]) {
+    _mm256_store_ps(rows[0], v[0]);
+    _mm256_store_ps(rows[1], v[1]);
+    _mm256_store_ps(rows[2], v[2]);
+}
+
+// Every row = v.
+RAYLAB_AVX2 inline void store3(float rows[3][kPacketSize], __m256 v) {
+    const __m256 all[3] = {v, v, v};
+    store3(rows, all);
+}
+
+// out[c] = float c of the 4 at rows[lane] + offset, for the 8 lanes: 8 unaligned 4-float loads
+// and a transpose.
+RAYLAB_AVX2 inline void loadColumns(const float* const rows[8], int offset, __m256 out[4]) {
     __m256 r[4];
     for (int i = 0; i < 4; ++i) {
         r[i] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[i] + offset)),
@@ -88,18 +111,86 @@ RAYLAB_AVX2 inline void loadVectors(const float* const rows[8], int offset, __m2
     out[0] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
     out[1] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
     out[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
+    out[3] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+// The geometric normal and the material index of scene triangle index[lane], for the 8 lanes:
+// read from the Bvh's shading records.
+RAYLAB_AVX2 inline void loadNormals(const BvhShadingRecord* records, const uint32_t index[8],
+                                    __m256 normal[3], __m256i& material) {
+    const float* rows[kPacketSize];
+    for (int i = 0; i < kPacketSize; ++i) {
+        rows[i] = &records[index[i]].normal.x;
+    }
+    __m256 columns[4];
+    loadColumns(rows, 0, columns);
+    for (int k = 0; k < 3; ++k) {
+        normal[k] = columns[k];
+    }
+    material = _mm256_castps_si256(columns[3]);
+}
+
+// The same computed from the scene's triangles, as geometricNormal: normalize(cross(e1, e2)),
+// (0, 0, 0) when the length is 0 or not finite.
+RAYLAB_AVX2 inline void computeNormals(const Triangle* triangles, const uint32_t index[8],
+                                       __m256 normal[3], __m256i& material) {
+    const float* rows[kPacketSize];
+    for (int i = 0; i < kPacketSize; ++i) {
+        rows[i] = &triangles[index[i]].v0.x;
+    }
+    __m256 v0[4], v1[4], v2[4]; // v2[3] is the material index (the Triangle layout above)
+    loadColumns(rows, 0, v0);
+    loadColumns(rows, 3, v1);
+    loadColumns(rows, 6, v2);
+    __m256 e1[3], e2[3];
+    for (int k = 0; k < 3; ++k) {
+        e1[k] = _mm256_sub_ps(v1[k], v0[k]);
+        e2[k] = _mm256_sub_ps(v2[k], v0[k]);
+    }
+    for (int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3;
+        const int k2 = (k + 2) % 3;
+        normal[k] = _mm256_sub_ps(_mm256_mul_ps(e1[k1], e2[k2]), _mm256_mul_ps(e2[k1], e1[k2]));
+    }
+    const __m256 length = _mm256_sqrt_ps(dot8(normal, normal));
+    const __m256 lengthOk =
+        _mm256_and_ps(_mm256_cmp_ps(length, _mm256_setzero_ps(), _CMP_GT_OQ),
+                      _mm256_cmp_ps(length, _mm256_set1_ps(kInfinity), _CMP_LT_OQ));
+    for (int k = 0; k < 3; ++k) {
+        normal[k] = _mm256_and_ps(_mm256_div_ps(normal[k], length), lengthOk);
+    }
+    material = _mm256_castps_si256(v2[3]);
+}
+
+// rho[c][lane] = materials[material[lane]].diffuse[c]: a gather per channel, material *
+// sizeof(Material) bytes from the first material's colour (material * sizeof(Material) / 4 must
+// fit an int32: fewer than 178 million materials of 48 bytes). In callgrind, 3 gathers cost 62
+// instructions a packet less than 24 scalar loads.
+RAYLAB_AVX2 inline void gatherDiffuse(const std::vector<Material>& materials, __m256i material,
+                                      __m256 rho[3]) {
+    static_assert(sizeof(Material) % sizeof(float) == 0);
+    const float* first = &materials.front().diffuse.x;
+    const __m256i at =
+        _mm256_mullo_epi32(material, _mm256_set1_epi32(sizeof(Material) / sizeof(float)));
+    for (int k = 0; k < 3; ++k) {
+        rho[k] = _mm256_i32gather_ps(first + k, at, sizeof(float));
+    }
 }
 
 // surfaceAt, lightAt and labRadiance for 8 lanes up to the shadow test; lanes that missed (or
-// hold no ray) give black.
-RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settings,
-                                const RayPacket& rays, const HitPacket& hits,
-                                ShadingBeforeShadow& stage, RayPacket& shadowRays,
-                                RayCounts& counts) {
+// hold no ray) give black. With kRecords, the normals and material indices are read from
+// bvh->shading (not empty); without, they are computed from the scene's triangles and bvh is not
+// read (may be null). A template, so that the records' path keeps none of the computation's
+// registers (GCC spills the normals when one function holds both).
+template <bool kRecords>
+RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh* bvh, const RenderSettings& settings,
+                                 const RayPacket& rays, const HitPacket& hits,
+                                 ShadingBeforeShadow& stage, RayPacket& shadowRays,
+                                 RayCounts& counts) {
     // closestHit8 leaves kNoTriangle in the lanes without a ray or a hit.
     const __m256i triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(hits.triangle));
-    const __m256 foundMask = _mm256_castsi256_ps(_mm256_xor_si256(
-        _mm256_cmpeq_epi32(triangle, _mm256_set1_epi32(-1)), _mm256_set1_epi32(-1)));
+    const __m256i missed = _mm256_cmpeq_epi32(triangle, _mm256_set1_epi32(-1));
+    const __m256 foundMask = _mm256_castsi256_ps(_mm256_xor_si256(missed, _mm256_set1_epi32(-1)));
     const unsigned hitLanes = static_cast<unsigned>(_mm256_movemask_ps(foundMask));
     const __m256 zero = _mm256_setzero_ps();
     shadowRays.lanes = 0;
@@ -111,55 +202,31 @@ RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settin
         return;
     }
     // Lanes without a hit read the first hit lane's triangle; their results are masked out.
-    const Triangle* triangles = scene.triangles.data();
-    const float* rows[kPacketSize];
-    const glm::vec3* diffuse[kPacketSize];
-    const uint32_t fallback = hits.triangle[__builtin_ctz(hitLanes)];
-    for (int i = 0; i < kPacketSize; ++i) {
-        const Triangle& tri = triangles[(hitLanes >> i) & 1u ? hits.triangle[i] : fallback];
-        rows[i] = &tri.v0.x;
-        diffuse[i] = &scene.materials[tri.material].diffuse;
+    alignas(32) uint32_t index[kPacketSize];
+    _mm256_store_si256(
+        reinterpret_cast<__m256i*>(index),
+        _mm256_blendv_epi8(
+            triangle, _mm256_set1_epi32(static_cast<int>(hits.triangle[__builtin_ctz(hitLanes)])),
+            missed));
+    __m256 n[3];
+    __m256i material;
+    if constexpr (kRecords) {
+        loadNormals(bvh->shading.data(), index, n, material);
+    } else {
+        computeNormals(scene.triangles.data(), index, n, material);
     }
-    // Built in registers, not stored lane by lane and reloaded (a store-forwarding stall).
     __m256 rho[3];
-    for (int k = 0; k < 3; ++k) {
-        rho[k] =
-            _mm256_setr_ps((*diffuse[0])[k], (*diffuse[1])[k], (*diffuse[2])[k], (*diffuse[3])[k],
-                           (*diffuse[4])[k], (*diffuse[5])[k], (*diffuse[6])[k], (*diffuse[7])[k]);
-    }
-    __m256 v0[3], v1[3], v2[3];
-    loadVectors(rows, 0, v0);
-    loadVectors(rows, 3, v1);
-    loadVectors(rows, 6, v2);
-    __m256 dir[3], e1[3], e2[3], o[3];
-    for (int k = 0; k < 3; ++k) {
-        o[k] = _mm256_load_ps(rays.origin[k]);
-        dir[k] = _mm256_load_ps(rays.direction[k]);
-        e1[k] = _mm256_sub_ps(v1[k], v0[k]);
-        e2[k] = _mm256_sub_ps(v2[k], v0[k]);
-    }
+    gatherDiffuse(scene.materials, material, rho);
+    const __m256 dir[3] = {load3(rays.direction, 0), load3(rays.direction, 1),
+                           load3(rays.direction, 2)};
     const __m256 t = _mm256_load_ps(hits.t);
     const __m256 signBit = _mm256_set1_ps(-0.0f);
-    // geometricNormal: normalize(cross(e1, e2)), (0, 0, 0) when the length is 0 or not finite.
-    __m256 n[3];
-    for (int k = 0; k < 3; ++k) {
-        const int k1 = (k + 1) % 3;
-        const int k2 = (k + 2) % 3;
-        n[k] = _mm256_sub_ps(_mm256_mul_ps(e1[k1], e2[k2]), _mm256_mul_ps(e2[k1], e1[k2]));
-    }
-    const __m256 length = _mm256_sqrt_ps(dot8(n, n));
-    const __m256 lengthOk =
-        _mm256_and_ps(_mm256_cmp_ps(length, zero, _CMP_GT_OQ),
-                      _mm256_cmp_ps(length, _mm256_set1_ps(kInfinity), _CMP_LT_OQ));
-    for (int k = 0; k < 3; ++k) {
-        n[k] = _mm256_and_ps(_mm256_div_ps(n[k], length), lengthOk);
-    }
     const __m256 flip = _mm256_and_ps(_mm256_cmp_ps(dot8(n, dir), zero, _CMP_GT_OQ), signBit);
     __m256 point[3], r[3];
     const glm::vec3 lightPosition = settings.light.position;
     for (int k = 0; k < 3; ++k) {
         n[k] = _mm256_xor_ps(n[k], flip);
-        point[k] = _mm256_add_ps(o[k], _mm256_mul_ps(t, dir[k]));
+        point[k] = _mm256_add_ps(load3(rays.origin, k), _mm256_mul_ps(t, dir[k]));
         r[k] = _mm256_sub_ps(_mm256_set1_ps(lightPosition[k]), point[k]);
     }
     // lightAt: D = P * (cos / (4 pi |r|^2)) when |r|^2 > 0 and cos = dot(r / |r|, n) > 0.
@@ -175,13 +242,12 @@ RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settin
     const __m256 scale =
         _mm256_div_ps(cosine, _mm256_mul_ps(_mm256_set1_ps(kFourPi), distanceSquared));
     const glm::vec3 power = settings.light.power();
-    unsigned litLanes = static_cast<unsigned>(_mm256_movemask_ps(lit)) & hitLanes;
+    const __m256 keep = _mm256_and_ps(lit, foundMask); // the lit lanes
+    const unsigned litLanes = static_cast<unsigned>(_mm256_movemask_ps(keep));
     if (settings.shadows && litLanes != 0) {
         // The shadow rays of the lit lanes, in their own lanes: eps < t < |r| - eps.
-        for (int k = 0; k < 3; ++k) {
-            _mm256_store_ps(shadowRays.origin[k], point[k]);
-            _mm256_store_ps(shadowRays.direction[k], toLight[k]);
-        }
+        store3(shadowRays.origin, point);
+        store3(shadowRays.direction, toLight);
         const float epsilon = settings.shadowEpsilon;
         _mm256_store_ps(shadowRays.tMin, _mm256_set1_ps(epsilon));
         _mm256_store_ps(shadowRays.tMax, _mm256_sub_ps(distance, _mm256_set1_ps(epsilon)));
@@ -190,7 +256,6 @@ RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settin
     }
     // labRadiance: R = rho * (D + N) when lit and unshadowed, rho * (0 + N) otherwise; black
     // where nothing was hit.
-    const __m256 keep = laneMask(litLanes);
     const glm::vec3 indirect = settings.indirect3();
     for (int k = 0; k < 3; ++k) {
         const __m256 ambient = _mm256_set1_ps(indirect[k]);
@@ -201,6 +266,18 @@ RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settin
         _mm256_store_ps(
             stage.dark[k],
             _mm256_and_ps(_mm256_mul_ps(rho[k], _mm256_add_ps(zero, ambient)), foundMask));
+    }
+}
+
+// beginShadeLanes with Bvh::shading when the Bvh has it.
+RAYLAB_AVX2 inline void beginShadeAvx2(const Scene& scene, const Bvh& bvh,
+                                       const RenderSettings& settings, const RayPacket& rays,
+                                       const HitPacket& hits, ShadingBeforeShadow& stage,
+                                       RayPacket& shadowRays, RayCounts& counts) {
+    if (!bvh.shading.empty()) {
+        beginShadeLanes<true>(scene, &bvh, settings, rays, hits, stage, shadowRays, counts);
+    } else {
+        beginShadeLanes<false>(scene, &bvh, settings, rays, hits, stage, shadowRays, counts);
     }
 }
 
@@ -221,10 +298,17 @@ int laneCount(unsigned lanes) {
     return simd ? laneCountAvx2(lanes) : __builtin_popcount(lanes);
 }
 
-void beginShade(const Scene& scene, const RenderSettings& settings, const RayPacket& rays,
-                const HitPacket& hits, ShadingBeforeShadow& stage, RayPacket& shadowRays,
-                RayCounts& counts) {
-    beginShadeAvx2(scene, settings, rays, hits, stage, shadowRays, counts);
+// AVX2 code: callers check bvhSimdSupported() (lab_shading_stages.h).
+RAYLAB_AVX2 void beginShade(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                            const RayPacket& rays, const HitPacket& hits,
+                            ShadingBeforeShadow& stage, RayPacket& shadowRays, RayCounts& counts) {
+    beginShadeAvx2(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
+}
+
+RAYLAB_AVX2 void beginShade(const Scene& scene, const RenderSettings& settings,
+                            const RayPacket& rays, const HitPacket& hits,
+                            ShadingBeforeShadow& stage, RayPacket& shadowRays, RayCounts& counts) {
+    beginShadeLanes<false>(scene, nullptr, settings, rays, hits, stage, shadowRays, counts);
 }
 
 void finishShade(const ShadingBeforeShadow& stage, unsigned occluded, RadiancePacket& radiance) {
@@ -237,9 +321,15 @@ namespace {
 RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                                 const RayPacket& rays, const HitPacket& hits,
                                 RadiancePacket& radiance, RayCounts& counts) {
+    // Every lane kNoTriangle (no ray or no hit): black, without the shading's stores and loads.
+    const __m256i triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(hits.triangle));
+    if (_mm256_testc_si256(triangle, _mm256_set1_epi32(-1))) {
+        store3(radiance.value, _mm256_setzero_ps());
+        return;
+    }
     ShadingBeforeShadow stage;
     RayPacket shadowRays{RayPacket::Unset{}}; // beginShadeAvx2 stores the lanes it sets
-    beginShadeAvx2(scene, settings, rays, hits, stage, shadowRays, counts);
+    beginShadeAvx2(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
     finishShadeAvx2(stage, shadowRays.lanes != 0 ? anyHit8(bvh, shadowRays) : 0u, radiance);
 }
 

@@ -19,8 +19,14 @@ struct alignas(32) ShadingBeforeShadow {
     float dark[3][kPacketSize];
 };
 
-// Shades the hits of rays up to the shadow test and sets shadowRays (every lane that needs one,
-// in the lane of its camera ray; shadowRays.lanes = those lanes), counting them in counts.shadow.
+// Shades the hits of rays (found in bvh, built for scene) up to the shadow test and sets
+// shadowRays (every lane that needs one, in the lane of its camera ray; shadowRays.lanes = those
+// lanes), counting them in counts.shadow. Reads the normals from bvh.shading when it has them.
+void beginShade(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                const RayPacket& rays, const HitPacket& hits, ShadingBeforeShadow& stage,
+                RayPacket& shadowRays, RayCounts& counts);
+
+// The same results without the Bvh: the normals are computed from the scene's triangles.
 void beginShade(const Scene& scene, const RenderSettings& settings, const RayPacket& rays,
                 const HitPacket& hits, ShadingBeforeShadow& stage, RayPacket& shadowRays,
                 RayCounts& counts);
