@@ -19,6 +19,8 @@ struct Camera {
     float yawDegrees = 0.0f;   // positive turns the view to the left (counter-clockwise from above)
     float pitchDegrees = 0.0f; // positive looks up; kept within (-90, 90)
     float verticalFovDegrees = kLabVerticalFovDegrees; // in (0, 180)
+
+    bool operator==(const Camera&) const = default;
 };
 
 // Columns: the camera's right, up and forward axes in world space (orthonormal).

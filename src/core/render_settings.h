@@ -20,6 +20,8 @@ struct PointLight {
     glm::vec3 color{1.0f};                 // each channel >= 0; the panel keeps it in [0, 1]
     float intensity = 14.0f;               // >= 0
     glm::vec3 power() const { return color * intensity; }
+
+    bool operator==(const PointLight&) const = default;
 };
 
 struct RenderSettings {
@@ -47,6 +49,9 @@ struct RenderSettings {
     glm::vec3 indirect3() const {
         return indirect ? indirectColor * indirectIntensity : glm::vec3(0.0f);
     }
+
+    // Every field equal (valid settings hold no NaN).
+    bool operator==(const RenderSettings&) const = default;
 };
 
 inline constexpr int kMaxImageSide = 16384;

@@ -20,6 +20,7 @@
 #include "panel_cache.h"
 #include "panel_context.h"
 #include "panel_numbers.h"
+#include "panel_settings_refresh.h"
 #include "redraw_schedule.h"
 #include "render_worker.h"
 #include "run_stats.h"
@@ -159,8 +160,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     ShownImage shown;
     RenderJob submitted;
     uint64_t submittedSerial = 0;
-    PanelNumbers numbers;             // live: every frame and picture
-    PanelNumbersRefresh panelNumbers; // what the panel shows: a copy, refreshed every 0.25 s
+    PanelNumbers numbers;               // live: every frame and picture
+    PanelNumbersRefresh panelNumbers;   // what the panel shows: a copy, refreshed every 0.25 s
+    PanelSettingsRefresh panelSettings; // the settings it shows: navigation 10 times a second
     int framesShown = 0;
     int screenshots = 0;
     bool quit = false;
@@ -287,7 +289,19 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             view.step = step;
             view.maxEpsilon = maxEpsilon;
             view.numbers = &panelNumbers.shown();
-            const PanelActions actions = drawPanel(panel, view);
+            // The panel draws a copy of the settings (panel_settings_refresh.h); edits, made
+            // only while it is in use, when the copy is the live settings, count.
+            const ImGuiIO& io = ImGui::GetIO();
+            PanelState drawn = panel;
+            drawn.settings = panelSettings.shown(
+                panel.settings, io.WantCaptureMouse || io.WantCaptureKeyboard, wokeAt);
+            const RenderSettings offered = drawn.settings;
+            const PanelActions actions = drawPanel(drawn, view);
+            const RenderSettings live = panel.settings;
+            panel = std::move(drawn); // its text fields and messages
+            if (panel.settings == offered) {
+                panel.settings = live; // no edit
+            }
             screenshots += actions.screenshot ? 1 : 0;
             if (actions.frameScene) {
                 frameScene(scene->scene, panel.settings);
@@ -365,6 +379,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         // The panel shows the last picture's numbers once their refresh comes, even when
         // nothing else is drawn then.
         if (const auto catchUp = panelNumbers.catchUpAt(numbers); showPanel && catchUp) {
+            schedule.wantAt(*catchUp);
+        }
+        if (const auto catchUp = panelSettings.catchUpAt(panel.settings); showPanel && catchUp) {
             schedule.wantAt(*catchUp);
         }
         if (ImGui::GetIO().WantTextInput) {
