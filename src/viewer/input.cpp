@@ -45,6 +45,12 @@ InputEvents InputCollector::take() {
     return out;
 }
 
+std::vector<NavKeyChange> InputCollector::takeNavKeys() {
+    std::vector<NavKeyChange> out = std::move(events_.navKeys);
+    events_.navKeys.clear();
+    return out;
+}
+
 void InputCollector::onKey(GLFWwindow* window, int key, int, int action, int) {
     InputEvents& events = collectorOf(window)->events_;
     events.keyboard = true;

@@ -50,6 +50,8 @@ public:
     InputEvents take();
     // The events since the last take(), left in place.
     const InputEvents& pending() const { return events_; }
+    // The navigation keys' changes since the last take() or takeNavKeys(), taken out of them.
+    std::vector<NavKeyChange> takeNavKeys();
 
 private:
     static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);

@@ -78,12 +78,26 @@ void trackHeldKeys(const std::vector<NavKeyChange>& changes, bool panelHasKeyboa
     }
 }
 
+// The navigation keys' changes, then the held keys' motion up to `now`, applied to `settings`
+// (the motion as a whole is refused when it would make them invalid).
+void applyHeldKeys(const std::vector<NavKeyChange>& changes, bool panelHasKeyboard,
+                   Clock::time_point now, float step, HeldKeys& held, RenderSettings& settings) {
+    trackHeldKeys(changes, panelHasKeyboard, now, held);
+    RenderSettings next = settings;
+    for (const NavMotion& motion : held.advance(now)) {
+        applyNavAction(motion.action, step, next, motion.steps);
+    }
+    std::string ignored;
+    acceptEdit(next, settings, ignored);
+}
+
 // Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
 // ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferHeight, HeldKeys& held, MouseDrag& drag, PanelState& panel,
                 bool& showPanel, int& screenshots, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
+    applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
     for (const int key : events.keys) {
         if (const auto command = commandForKey(key)) {
@@ -95,10 +109,6 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 quit = true;
             }
         }
-    }
-    trackHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, held);
-    for (const NavMotion& motion : held.advance(now)) {
-        applyNavAction(motion.action, step, next, motion.steps);
     }
     if (!io.WantCaptureMouse && events.scroll != 0.0) {
         moveCamera(static_cast<float>(events.scroll) * step, next);
@@ -190,9 +200,23 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         waitForEvents(wasMinimised ? idleUntil : std::min(schedule.wakeAt(), idleUntil));
         const auto wokeAt = Clock::now();
         quit = quit || glfwWindowShouldClose(window.handle()) != 0;
-        if (worker.takeLatest(shown)) {
+        const bool pictureArrived = worker.takeLatest(shown);
+        if (pictureArrived) {
             pictureToUpload = true;
             schedule.want(wokeAt);
+        }
+        // A picture arriving between frames while a navigation key is held: the motion up to
+        // now becomes the next view at once, so the tracer starts it without waiting for the
+        // next frame's slot, and each frame shows the newest view finished.
+        if (pictureArrived && held.anyHeld() && submittedSerial != 0 && !wasMinimised &&
+            !schedule.due(wokeAt)) {
+            applyHeldKeys(input.takeNavKeys(), ImGui::GetIO().WantCaptureKeyboard, wokeAt, step,
+                          held, panel.settings);
+            const RenderJob job{scene, panel.settings, keepLinear};
+            if (!sameJob(job, submitted)) {
+                submittedSerial = worker.submit(job);
+                submitted = job;
+            }
         }
         if (input.pending().other) {
             schedule.want(wokeAt, kFramesAfterEvent);
