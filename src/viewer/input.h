@@ -79,6 +79,8 @@ public:
     // Returns the yaw and pitch (degrees) to apply this frame. `start` is whether a press
     // outside the panel happened this frame; `degreesPerPixel` = vertical fov / framebuffer height.
     void update(GLFWwindow* window, bool start, float degreesPerPixel, float& yaw, float& pitch);
+    // Whether a drag is under way (as of the last update).
+    bool dragging() const { return dragging_; }
 
 private:
     bool dragging_ = false;

@@ -91,6 +91,20 @@ void applyHeldKeys(const std::vector<NavKeyChange>& changes, bool panelHasKeyboa
     acceptEdit(next, settings, ignored);
 }
 
+// The mouse drag's turn since its last update applied to `settings`; `start`: a press outside
+// the panel happened now.
+void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferHeight,
+               RenderSettings& settings) {
+    float yaw = 0.0f, pitch = 0.0f;
+    drag.update(window, start,
+                settings.camera.verticalFovDegrees /
+                    static_cast<float>(std::max(framebufferHeight, 1)),
+                yaw, pitch);
+    if (yaw != 0.0f || pitch != 0.0f) {
+        turnCamera(yaw, pitch, settings);
+    }
+}
+
 // Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
 // ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
@@ -113,13 +127,7 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
     if (!io.WantCaptureMouse && events.scroll != 0.0) {
         moveCamera(static_cast<float>(events.scroll) * step, next);
     }
-    float yaw = 0.0f, pitch = 0.0f;
-    drag.update(window, events.leftPressed && !io.WantCaptureMouse,
-                next.camera.verticalFovDegrees / static_cast<float>(std::max(framebufferHeight, 1)),
-                yaw, pitch);
-    if (yaw != 0.0f || pitch != 0.0f) {
-        turnCamera(yaw, pitch, next);
-    }
+    applyDrag(window, drag, events.leftPressed && !io.WantCaptureMouse, framebufferHeight, next);
     std::string ignored;
     acceptEdit(next, panel.settings, ignored);
 }
@@ -205,13 +213,21 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             pictureToUpload = true;
             schedule.want(wokeAt);
         }
-        // A picture arriving between frames while a navigation key is held: the motion up to
-        // now becomes the next view at once, so the tracer starts it without waiting for the
-        // next frame's slot, and each frame shows the newest view finished.
-        if (pictureArrived && held.anyHeld() && submittedSerial != 0 && !wasMinimised &&
-            !schedule.due(wokeAt)) {
+        // A picture arriving between frames while a navigation key is held or the mouse drags:
+        // the motion up to now becomes the next view at once, so the tracer starts it without
+        // waiting for the next frame's slot, and each frame shows the newest view finished.
+        if (pictureArrived && (held.anyHeld() || drag.dragging()) && submittedSerial != 0 &&
+            !wasMinimised && !schedule.due(wokeAt)) {
             applyHeldKeys(input.takeNavKeys(), ImGui::GetIO().WantCaptureKeyboard, wokeAt, step,
                           held, panel.settings);
+            if (drag.dragging()) {
+                int framebufferWidth = 0, framebufferHeight = 0;
+                window.framebufferSize(framebufferWidth, framebufferHeight);
+                RenderSettings turned = panel.settings;
+                applyDrag(window.handle(), drag, false, framebufferHeight, turned);
+                std::string ignored;
+                acceptEdit(turned, panel.settings, ignored);
+            }
             const RenderJob job{scene, panel.settings, keepLinear};
             if (!sameJob(job, submitted)) {
                 submittedSerial = worker.submit(job);
