@@ -171,24 +171,36 @@ TEST(ViewerRenderWorker, ShortFirstPassesFinishWhileTheCameraMoves) {
     EXPECT_GE(totals.passes.count, 2u);
 }
 
-// Passes that do not fit the budget are still cancelled by a new picture.
+// Passes that do not fit the budget are still cancelled by a new picture: each new job comes once
+// its preview is shown, while its full pass (tens of milliseconds on one thread) runs.
 TEST(ViewerRenderWorker, LongPassesAreCancelledByANewPicture) {
     const auto box = labBox();
     RenderWorker worker(1e-9); // no pass fits: previews first, full passes cancellable
     RenderSettings settings = smallSettings(1);
-    settings.width = 640;
-    settings.height = 480;
+    settings.width = 1280;
+    settings.height = 960;
     settings.threads = 1;
-    waitFinal(worker, worker.submit({box, settings}));
-    uint64_t serial = 0;
-    for (int step = 1; step <= 200; ++step) {
+    uint64_t serial = worker.submit({box, settings});
+    waitFinal(worker, serial);
+    ShownImage shown;
+    for (int step = 1; step <= 5; ++step) {
         settings.camera.yawDegrees = 0.5f * static_cast<float>(step);
         serial = worker.submit({box, settings});
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (!(shown.jobSerial == serial && shown.preview) &&
+               std::chrono::steady_clock::now() < deadline) {
+            worker.takeLatest(shown);
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        ASSERT_EQ(shown.jobSerial, serial) << "no preview of job " << serial;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2)); // its full pass has begun
     }
+    settings.camera.yawDegrees = 10.0f;
+    serial = worker.submit({box, settings});
     const ShownImage last = waitFinal(worker, serial);
     EXPECT_EQ(last.bgra.pixels, reference(*box, settings));
-    EXPECT_GT(worker.totals().cancelled, 0u);
+    EXPECT_GE(worker.totals().cancelled, 3u) << worker.totals().passes.count << " passes, "
+                                             << worker.totals().previews.count << " previews";
 }
 
 TEST(ViewerSettingsEdit, RefusesNonsenseAndKeepsTheCurrentSettings) {
