@@ -179,11 +179,11 @@ RAYLAB_AVX2 inline void gatherDiffuse(const std::vector<Material>& materials, __
 
 // surfaceAt, lightAt and labRadiance for 8 lanes up to the shadow test; lanes that missed (or
 // hold no ray) give black. With kRecords, the normals and material indices are read from
-// bvh->shading (not empty); without, they are computed from the scene's triangles and bvh is not
-// read (may be null). A template, so that the records' path keeps none of the computation's
-// registers (GCC spills the normals when one function holds both).
+// bvh.shading (not empty); without, they are computed from the scene's triangles. A template, so
+// that the records' path keeps none of the computation's registers (GCC spills the normals when
+// one function holds both).
 template <bool kRecords>
-RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh* bvh, const RenderSettings& settings,
+RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                                  const RayPacket& rays, const HitPacket& hits,
                                  ShadingBeforeShadow& stage, RayPacket& shadowRays,
                                  RayCounts& counts) {
@@ -211,7 +211,7 @@ RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh* bvh, const Rende
     __m256 n[3];
     __m256i material;
     if constexpr (kRecords) {
-        loadNormals(bvh->shading.data(), index, n, material);
+        loadNormals(bvh.shading.data(), index, n, material);
     } else {
         computeNormals(scene.triangles.data(), index, n, material);
     }
@@ -275,9 +275,9 @@ RAYLAB_AVX2 inline void beginShadeAvx2(const Scene& scene, const Bvh& bvh,
                                        const HitPacket& hits, ShadingBeforeShadow& stage,
                                        RayPacket& shadowRays, RayCounts& counts) {
     if (!bvh.shading.empty()) {
-        beginShadeLanes<true>(scene, &bvh, settings, rays, hits, stage, shadowRays, counts);
+        beginShadeLanes<true>(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
     } else {
-        beginShadeLanes<false>(scene, &bvh, settings, rays, hits, stage, shadowRays, counts);
+        beginShadeLanes<false>(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
     }
 }
 
@@ -303,12 +303,6 @@ RAYLAB_AVX2 void beginShade(const Scene& scene, const Bvh& bvh, const RenderSett
                             const RayPacket& rays, const HitPacket& hits,
                             ShadingBeforeShadow& stage, RayPacket& shadowRays, RayCounts& counts) {
     beginShadeAvx2(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
-}
-
-RAYLAB_AVX2 void beginShade(const Scene& scene, const RenderSettings& settings,
-                            const RayPacket& rays, const HitPacket& hits,
-                            ShadingBeforeShadow& stage, RayPacket& shadowRays, RayCounts& counts) {
-    beginShadeLanes<false>(scene, nullptr, settings, rays, hits, stage, shadowRays, counts);
 }
 
 void finishShade(const ShadingBeforeShadow& stage, unsigned occluded, RadiancePacket& radiance) {

@@ -26,11 +26,6 @@ void beginShade(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
                 const RayPacket& rays, const HitPacket& hits, ShadingBeforeShadow& stage,
                 RayPacket& shadowRays, RayCounts& counts);
 
-// The same results without the Bvh: the normals are computed from the scene's triangles.
-void beginShade(const Scene& scene, const RenderSettings& settings, const RayPacket& rays,
-                const HitPacket& hits, ShadingBeforeShadow& stage, RayPacket& shadowRays,
-                RayCounts& counts);
-
 // The radiance once the shadow rays' answers are known (bit i: lane i's shadow ray is blocked).
 void finishShade(const ShadingBeforeShadow& stage, unsigned occluded, RadiancePacket& radiance);
 
