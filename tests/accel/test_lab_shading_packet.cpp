@@ -90,10 +90,10 @@ TEST(LabShadingPacket, LaneMasksWithGaps) {
     EXPECT_GT(lit, 500);
 }
 
-// shadeLabBlock (a block's packets traced together through frustum candidates) against
-// shadeLab8 packet by packet: blocks of 1 to 8 rows, rows of 1 to 8 lanes, lanes with gaps,
-// with and without shadows, for the box (traced through frustums) and a soup of 5,000 triangles
-// (too large a scene: packet by packet).
+// shadeLabBlock (a block's packets traced together through frustum candidates, fitted to the
+// rays or from the block's image rectangle) against shadeLab8 packet by packet: blocks of 1 to 8
+// rows, rows of 1 to 8 lanes, lanes with gaps, with and without shadows, for the box (traced
+// through frustums) and a soup of 5,000 triangles (too large a scene: packet by packet).
 void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings) {
     const Bvh bvh = buildBvh(scene);
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
@@ -114,19 +114,28 @@ void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings
                                        ? (pattern * 37u + static_cast<unsigned>(r)) & 0xffu
                                        : 0xffu;
             }
-            RadiancePacket block[kPacketSize], single[kPacketSize];
-            RayCounts blockCounts, singleCounts;
+            RadiancePacket block[kPacketSize], framed[kPacketSize], single[kPacketSize];
+            RayCounts blockCounts, framedCounts, singleCounts;
             shadeLabBlock(scene, bvh, settings, packets, rows, block, blockCounts);
+            // As the renderer calls it: the camera rays' frustum from the block's pixels.
+            const ImageRect rect{static_cast<float>(x0), static_cast<float>(y0),
+                                 static_cast<float>(x0 + kPacketSize),
+                                 static_cast<float>(y0 + rows)};
+            shadeLabBlock(scene, bvh, settings, primary, rect, packets, rows, framed, framedCounts);
             for (int r = 0; r < rows; ++r) {
                 shadeLab8(scene, bvh, settings, packets[r], single[r], singleCounts);
                 ASSERT_EQ(std::memcmp(&block[r], &single[r], sizeof(RadiancePacket)), 0)
                     << "block " << x0 << ", " << y0 << " row " << r;
+                ASSERT_EQ(std::memcmp(&framed[r], &single[r], sizeof(RadiancePacket)), 0)
+                    << "block " << x0 << ", " << y0 << " row " << r << " (image rectangle)";
                 for (int i = 0; i < kPacketSize; ++i) {
                     lit += block[r].value[0][i] > 0.0f ? 1 : 0;
                 }
             }
             ASSERT_EQ(blockCounts.primary, singleCounts.primary);
             ASSERT_EQ(blockCounts.shadow, singleCounts.shadow);
+            ASSERT_EQ(framedCounts.primary, singleCounts.primary);
+            ASSERT_EQ(framedCounts.shadow, singleCounts.shadow);
         }
     }
     EXPECT_GT(lit, settings.width * settings.height / 4);
