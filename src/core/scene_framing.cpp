@@ -1,5 +1,8 @@
 #include "scene_framing.h"
 
+#include "camera.h"
+#include "scene_view_side.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/trigonometric.hpp>
@@ -40,13 +43,15 @@ void frameScene(const Scene& scene, RenderSettings& settings) {
     const float halfHorizontal = std::atan(std::tan(halfVertical) * aspect);
     const float distance = radius / std::sin(std::min(halfVertical, halfHorizontal));
 
-    settings.camera.position = center - glm::vec3(0.0f, 0.0f, distance);
-    settings.camera.yawDegrees = 0.0f;
+    // Level, looking along +z or into an opening on another side (scene_view_side.h).
+    settings.camera.yawDegrees = yawDegreesOf(framingSide(scene));
     settings.camera.pitchDegrees = 0.0f;
+    const glm::vec3 forward = forwardOf(settings.camera);
+    settings.camera.position = center - distance * forward;
 
     // Above and in front, outside the bounding sphere; power so that the centre receives the
     // lab's irradiance: E = P / (4 pi d^2) with d^2 = 2 radius^2.
-    settings.light.position = center + glm::vec3(0.0f, radius, -radius);
+    settings.light.position = center + glm::vec3(0.0f, radius, 0.0f) - radius * forward;
     settings.light.color = glm::vec3(1.0f);
     settings.light.intensity = kFramedIrradiance * 4.0f * 3.14159265f * 2.0f * radius * radius;
 

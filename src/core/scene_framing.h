@@ -13,10 +13,11 @@ float scaledShadowEpsilon(const Aabb& bounds);
 // The step one key press moves the camera or light: 0.1 for the lab's box, scaled likewise.
 float navigationStep(const Aabb& bounds);
 
-// Frames a scene: the camera looks along +z at the centre of the bounding box from far enough to
-// see all of it at the current field of view and aspect; the light sits above and in front; the
-// shadow epsilon scales with the scene's size. Other settings are kept. An empty scene is left as
-// is.
+// Frames a scene: the camera looks level at the centre of the bounding box, along +z or, for a
+// scene open on another side (a box with one wall missing), into the opening (framingSide,
+// scene_view_side.h), from far enough to see all of it at the current field of view and aspect;
+// the light sits above and in front; the shadow epsilon scales with the scene's size. Other
+// settings are kept. An empty scene is left as is.
 void frameScene(const Scene& scene, RenderSettings& settings);
 
 } // namespace raylab
