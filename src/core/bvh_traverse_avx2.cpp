@@ -10,6 +10,7 @@
 // zero, where the scalar test switches to double precision, go to intersectTriangle itself.
 
 #include "bvh_wide_traverse.h"
+#include "finite.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 
@@ -37,10 +38,6 @@ struct WideRay {
     int vertexOffset[3];
     __m256 shearX, shearY, shearZ, tMax;
 };
-
-inline bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 // Fills r for `ray`; false for the rays WatertightRay calls invalid (they hit nothing). The
 // permutation and shear are WatertightRay's constructor's, computed the same way (tests check

@@ -1,15 +1,13 @@
 #include "render_settings.h"
 
+#include "finite.h"
+
 #include <cmath>
 #include <sstream>
 
 namespace raylab {
 
 namespace {
-
-bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 bool isFiniteNonNegative(const glm::vec3& v) {
     return isFinite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;

@@ -1,17 +1,11 @@
 #include "scene.h"
 
+#include "finite.h"
+
 #include <cmath>
 #include <glm/geometric.hpp>
 
 namespace raylab {
-
-namespace {
-
-bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-} // namespace
 
 float Aabb::diagonal() const { return empty() ? 0.0f : glm::length(upper - lower); }
 

@@ -1,5 +1,7 @@
 #include "scene_view_side.h"
 
+#include "finite.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -7,10 +9,6 @@
 namespace raylab {
 
 namespace {
-
-bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 // The nearest and farthest depth (coordinate `depthAxis`) of the triangles covering each cell of
 // a grid over axes (across, kUp) of the box: cell (i, j) has its centre at

@@ -1,18 +1,12 @@
 #include "triangle_intersection.h"
 
+#include "finite.h"
+
 #include <cmath>
 #include <glm/common.hpp>
 #include <utility>
 
 namespace raylab {
-
-namespace {
-
-bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-} // namespace
 
 WatertightRay::WatertightRay(const Ray& ray) : origin(ray.origin), tMin(ray.tMin), tMax(ray.tMax) {
     const glm::vec3& d = ray.direction;
