@@ -190,6 +190,14 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     const bool keepLinear = !command.screenshot.empty() &&
                             std::filesystem::path(command.screenshot).extension() != ".png";
     const bool needsFinal = !command.screenshot.empty() || !options.readback.empty();
+    // Hands the panel's settings to the render thread when they make another job than the last.
+    const auto submitSettings = [&] {
+        const RenderJob job{scene, panel.settings, keepLinear};
+        if (submittedSerial == 0 || !sameJob(job, submitted)) {
+            submittedSerial = worker.submit(job);
+            submitted = job;
+        }
+    };
     // Scripted runs draw every frame (N frames take N / 60 s); interactive ones only when wanted.
     RedrawSchedule schedule(kFramesPerSecond, scripted);
     auto previousFrameTime = Clock::now();
@@ -228,11 +236,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 std::string ignored;
                 acceptEdit(turned, panel.settings, ignored);
             }
-            const RenderJob job{scene, panel.settings, keepLinear};
-            if (!sameJob(job, submitted)) {
-                submittedSerial = worker.submit(job);
-                submitted = job;
-            }
+            submitSettings();
         }
         if (input.pending().other) {
             schedule.want(wokeAt, kFramesAfterEvent);
@@ -357,11 +361,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         // The job: the panel's settings at the framebuffer's resolution times the scale.
         panel.settings.width = renderSide(fbWidth, panel.resolutionScale);
         panel.settings.height = renderSide(fbHeight, panel.resolutionScale);
-        const RenderJob job{scene, panel.settings, keepLinear};
-        if (submittedSerial == 0 || !sameJob(job, submitted)) {
-            submittedSerial = worker.submit(job);
-            submitted = job;
-        }
+        submitSettings();
         // A picture of the current job that settings reproduce exactly.
         const bool current =
             shown.jobSerial == submittedSerial && !shown.preview && shown.bgra.width > 0;
