@@ -4,7 +4,7 @@
 #include "camera.h"
 #include "display_transform.h"
 #include "parallel_tiles.h"
-#include "sampling.h"
+#include "sampling/hash.h"
 #include "watertight_avx2.h"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/renderer.h"
-#include "core/sampling.h"
+#include "core/sampling/hash.h"
 
 #include <cstring>
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 #include "core/cornell_box.h"
 #include "core/display_transform.h"
 #include "core/renderer.h"
-#include "core/sampling.h"
+#include "core/sampling/hash.h"
 
 #include <algorithm>
 #include <atomic>
