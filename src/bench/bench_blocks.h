@@ -39,7 +39,7 @@ struct BlockedRays {
 };
 
 // Tile i's pixels in blocks of 8 x 8 from its top-left corner, row of blocks by row of blocks,
-// as the renderer's accumulatePass walks a tile.
+// as the lab integrator's fast pass (core/integrators/lab_pass.cpp) walks a tile.
 BlockedRays blockRays(const BenchRays& rays);
 
 // What tracing a block recorded: bit kCameraCandidates of flags[b] when its camera packets went

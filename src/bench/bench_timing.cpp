@@ -1,6 +1,6 @@
 #include "bench_timing.h"
 
-#include "core/parallel_tiles.h"
+#include "core/render/parallel_tiles.h"
 
 #include <algorithm>
 #include <chrono>

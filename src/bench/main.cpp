@@ -17,7 +17,7 @@
 #include "core/bvh.h"
 #include "core/bvh_packet.h"
 #include "core/camera.h"
-#include "core/parallel_tiles.h"
+#include "core/render/parallel_tiles.h"
 #include "core/scene_framing.h"
 #include "io/command_line.h"
 #include "io/mesh_loader.h"

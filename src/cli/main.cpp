@@ -3,7 +3,7 @@
 // error is one line on stderr and leaves no output file behind.
 
 #include "core/bvh.h"
-#include "core/renderer.h"
+#include "core/render/renderer.h"
 #include "io/atomic_file.h"
 #include "io/command_line.h"
 #include "io/image_io.h"
@@ -122,7 +122,7 @@ int run(int argc, char** argv) {
         return fail(1, error);
     }
 
-    const double rays = static_cast<double>(counts.primary + counts.shadow);
+    const double rays = static_cast<double>(counts.total());
     std::fprintf(
         stderr, "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s -> %s\n",
         kProgram, settings.width, settings.height, settings.samplesPerPixel, scene.triangles.size(),

@@ -14,7 +14,7 @@
 #include "bvh_build_team.h"
 #include "bvh_collapse.h"
 #include "bvh_presplit.h"
-#include "parallel_tiles.h"
+#include "render/parallel_tiles.h"
 
 #include <algorithm>
 #include <cmath>

@@ -46,6 +46,9 @@ std::string validate(const RenderSettings& s) {
     if (!(std::isfinite(s.light.intensity) && s.light.intensity >= 0.0f)) {
         return "light power must be finite and >= 0, got " + text(s.light.intensity);
     }
+    if (!(std::isfinite(s.light.radius) && s.light.radius >= 0.0f)) {
+        return "light radius must be finite and >= 0, got " + text(s.light.radius);
+    }
     if (!isFiniteNonNegative(s.indirectColor)) {
         return "indirect colour must be finite and >= 0, got " + text(s.indirectColor);
     }
@@ -70,7 +73,23 @@ std::string validate(const RenderSettings& s) {
     if (!(std::isfinite(s.exposure) && std::abs(s.exposure) <= 64.0f)) {
         return "exposure must be finite within [-64, 64] stops, got " + text(s.exposure);
     }
+    if (s.maxBounces < 0 || s.maxBounces > kMaxBounces) {
+        return "max bounces must be 0.." + std::to_string(kMaxBounces) + ", got " +
+               std::to_string(s.maxBounces);
+    }
+    if (!(std::isfinite(s.emissionScale) && s.emissionScale >= 0.0f)) {
+        return "emission scale must be finite and >= 0, got " + text(s.emissionScale);
+    }
     return {};
+}
+
+bool sameSamples(const RenderSettings& a, const RenderSettings& b) {
+    RenderSettings x = a;
+    x.samplesPerPixel = b.samplesPerPixel;
+    x.threads = b.threads;
+    x.display = b.display;
+    x.exposure = b.exposure;
+    return x == b;
 }
 
 const char* toString(DisplayMode mode) { return mode == DisplayMode::Lab ? "lab" : "srgb"; }
@@ -82,6 +101,26 @@ bool parseDisplayMode(const std::string& text, DisplayMode& mode) {
     }
     if (text == "srgb") {
         mode = DisplayMode::Srgb;
+        return true;
+    }
+    return false;
+}
+
+} // namespace raylab
+
+namespace raylab {
+
+const char* toString(Integrator integrator) {
+    return integrator == Integrator::Lab ? "lab" : "path";
+}
+
+bool parseIntegrator(const std::string& text, Integrator& integrator) {
+    if (text == "lab") {
+        integrator = Integrator::Lab;
+        return true;
+    }
+    if (text == "path") {
+        integrator = Integrator::Path;
         return true;
     }
     return false;

@@ -3,6 +3,7 @@
 // The viewer's panel, raylab-render's flags and the settings JSON all edit this struct.
 
 #include "camera.h"
+#include "sampling/sampler.h"
 
 #include <glm/vec3.hpp>
 #include <string>
@@ -14,11 +15,21 @@ enum class DisplayMode {
     Srgb, // R * 2^exposure, then the sRGB transfer curve
 };
 
-// A point light. Its power P = color * intensity, in watts per colour channel.
+// Which light transport makes the picture (DESIGN.md section 5).
+enum class Integrator {
+    Lab,  // R = E + rho * (D + N) with the constant N: the lab's model
+    Path, // R = E + rho * (D + N(x)) with N(x) computed by Monte Carlo path tracing
+};
+
+// The lab's light. Its power P = color * intensity, in watts per colour channel. With radius 0 it
+// is the lab's point light; with radius r > 0 it is a sphere of radius r centred at position,
+// emitting the same total power uniformly from its surface (soft shadows). The sphere is not
+// geometry: rays pass through it, and it lights the scene only through its samples.
 struct PointLight {
     glm::vec3 position{0.0f, 0.5f, -0.7f}; // the lab's (0, -0.5, -0.7) in y-up world
     glm::vec3 color{1.0f};                 // each channel >= 0; the panel keeps it in [0, 1]
-    float intensity = 14.0f;               // >= 0
+    float intensity = 14.0f;               // >= 0; 0 leaves a scene lit by its emitters alone
+    float radius = 0.0f;                   // world units, >= 0
     glm::vec3 power() const { return color * intensity; }
 
     bool operator==(const PointLight&) const = default;
@@ -46,6 +57,14 @@ struct RenderSettings {
     DisplayMode display = DisplayMode::Lab;
     float exposure = 0.0f; // stops, for DisplayMode::Srgb
 
+    Integrator integrator = Integrator::Lab;
+    // The path integrator's indirect bounces (0 = direct light only), with Russian roulette from
+    // the fourth on. `indirect` off means 0 too.
+    int maxBounces = 8;
+    // Multiplies the emission (Le) of every emitting material of the scene; >= 0.
+    float emissionScale = 1.0f;
+    SamplerKind sampler = SamplerKind::Sobol; // the path integrator's and the sphere light's
+
     glm::vec3 indirect3() const {
         return indirect ? indirectColor * indirectIntensity : glm::vec3(0.0f);
     }
@@ -57,6 +76,12 @@ struct RenderSettings {
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr int kMaxSamplesPerPixel = 1 << 16;
 inline constexpr int kMaxThreads = 1024;
+inline constexpr int kMaxBounces = 1024;
+
+// True when two settings give the same samples, so that a film of one can go on accumulating
+// for the other: every field but the sample cap, the thread count and the display transform.
+// The one rule for when a progressive picture restarts.
+bool sameSamples(const RenderSettings& a, const RenderSettings& b);
 
 // Returns an empty string when every value makes sense, otherwise one line naming the first
 // value that does not (e.g. "light intensity must be finite and >= 0, got nan").
@@ -65,5 +90,8 @@ std::string validate(const RenderSettings& settings);
 const char* toString(DisplayMode mode);
 // Parses "lab" or "srgb"; returns false for anything else.
 bool parseDisplayMode(const std::string& text, DisplayMode& mode);
+const char* toString(Integrator integrator);
+// Parses "lab" or "path"; returns false for anything else.
+bool parseIntegrator(const std::string& text, Integrator& integrator);
 
 } // namespace raylab

@@ -10,10 +10,13 @@
 
 namespace raylab {
 
-// A Lambertian material: diffuse reflectance rho per colour channel, each in [0, 1].
+// A Lambertian material: diffuse reflectance rho per colour channel, each in [0, 1], and the
+// radiance Le it emits from the front face of its triangles (the side the winding's normal points
+// to), each channel finite and >= 0 (W/m^2/sr; MTL Ke, glTF emissive). Emitted R is pi * Le.
 struct Material {
     std::string name;
     glm::vec3 diffuse{0.75f}; // rho; 0.75 grey where a file gives none
+    glm::vec3 emission{0.0f}; // Le; 0 for a surface that does not emit
 };
 
 // One triangle. The geometric normal is normalize(cross(v1 - v0, v2 - v0)); shading turns it to

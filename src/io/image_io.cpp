@@ -2,7 +2,7 @@
 
 #include "io/image_io.h"
 
-#include "core/display_transform.h"
+#include "core/render/display_transform.h"
 #include "io/text_util.h"
 
 #include <filesystem>

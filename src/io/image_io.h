@@ -3,7 +3,7 @@
 // RGB). Every writer writes a temporary file beside the target and renames it, so a failed write
 // never leaves a partial file.
 
-#include "core/framebuffer.h"
+#include "core/render/framebuffer.h"
 #include "core/render_settings.h"
 
 #include <cstdint>

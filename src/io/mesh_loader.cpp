@@ -114,6 +114,19 @@ Material toMaterial(const aiMaterial& source, bool forceGrey) {
         source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == aiReturn_SUCCESS) {
         material.diffuse = clampedColour(colour);
     }
+    // Emitted radiance Le: OBJ's Ke or glTF's emissiveFactor, times glTF's
+    // KHR_materials_emissive_strength where Assimp reads it. Not clamped to 1 (lights are
+    // brighter than that); a negative or non-finite channel is not light: 0.
+    aiColor4D emissive(0.0f, 0.0f, 0.0f, 1.0f);
+    if (source.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == aiReturn_SUCCESS) {
+        ai_real strength = 1.0f;
+        source.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength);
+        const auto channel = [strength](ai_real v) {
+            const float f = static_cast<float>(v * strength);
+            return std::isfinite(f) && f > 0.0f ? f : 0.0f;
+        };
+        material.emission = {channel(emissive.r), channel(emissive.g), channel(emissive.b)};
+    }
     return material;
 }
 
@@ -230,7 +243,7 @@ bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std
         loaded.materials.push_back(toMaterial(*source->mMaterials[i], forceGrey));
     }
     if (loaded.materials.empty()) {
-        loaded.materials.push_back(Material{"default", glm::vec3(kDefaultGrey)});
+        loaded.materials.push_back(Material{"default", glm::vec3(kDefaultGrey), glm::vec3(0.0f)});
     }
 
     for (unsigned m = 0; m < source->mNumMeshes; ++m) {

@@ -19,6 +19,7 @@ SceneLoadResult loadSceneForViewer(const std::string& source) {
         }
         result.warnings = describe(report, source);
         loaded->bvh = buildBvh(loaded->scene);
+        loaded->emitters = buildEmitterTable(loaded->scene);
         result.scene = std::move(loaded);
     } catch (const std::exception& e) {
         // Out of memory on a huge file, for instance: report it instead of ending the viewer.

@@ -3,6 +3,7 @@
 // the UI thread and the render thread (the render thread keeps it alive while a pass runs).
 
 #include "core/bvh.h"
+#include "core/lights/emitters.h"
 #include "core/scene.h"
 
 #include <memory>
@@ -14,6 +15,7 @@ struct LoadedScene {
     std::string source; // "cornell" or the mesh path, as given
     Scene scene;
     Bvh bvh;
+    EmitterTable emitters; // buildEmitterTable(scene)
 };
 
 struct SceneLoadResult {

@@ -11,8 +11,9 @@
 #include <unistd.h>
 #endif
 
-#include "core/display_transform.h"
-#include "core/renderer.h"
+#include "core/render/display_transform.h"
+#include "core/render/film.h"
+#include "core/render/renderer.h"
 
 namespace raylab::viewer {
 
@@ -71,29 +72,17 @@ void lowerThisThreadsPriority() {
 }
 
 double raysPerSecond(const RayCounts& counts, double seconds) {
-    return seconds > 0.0 ? static_cast<double>(counts.primary + counts.shadow) / seconds : 0.0;
+    return seconds > 0.0 ? static_cast<double>(counts.total()) / seconds : 0.0;
 }
 
 } // namespace
 
 bool samePicture(const RenderJob& a, const RenderJob& b) {
-    const RenderSettings& s = a.settings;
-    const RenderSettings& t = b.settings;
-    return a.scene == b.scene && s.camera.position == t.camera.position &&
-           s.camera.yawDegrees == t.camera.yawDegrees &&
-           s.camera.pitchDegrees == t.camera.pitchDegrees &&
-           s.camera.verticalFovDegrees == t.camera.verticalFovDegrees &&
-           s.light.position == t.light.position && s.light.color == t.light.color &&
-           s.light.intensity == t.light.intensity && s.indirect == t.indirect &&
-           s.indirectColor == t.indirectColor && s.indirectIntensity == t.indirectIntensity &&
-           s.shadows == t.shadows && s.shadowEpsilon == t.shadowEpsilon && s.width == t.width &&
-           s.height == t.height;
+    return a.scene == b.scene && sameSamples(a.settings, b.settings);
 }
 
 bool sameJob(const RenderJob& a, const RenderJob& b) {
-    return samePicture(a, b) && a.settings.samplesPerPixel == b.settings.samplesPerPixel &&
-           a.settings.threads == b.settings.threads && a.settings.display == b.settings.display &&
-           a.settings.exposure == b.settings.exposure;
+    return a.scene == b.scene && a.settings == b.settings;
 }
 
 RenderWorker::RenderWorker(double previewBudgetSeconds, std::function<void()> onPicture)
@@ -140,17 +129,16 @@ bool RenderWorker::takeLatest(ShownImage& out) {
 
 void RenderWorker::run() {
     lowerThisThreadsPriority();
-    // The accumulation: `sums` holds `samples` samples per pixel of `job` when `sumsValid`.
-    // Sample 0 overwrites the sums (accumulatePass), so a restart only resizes them.
+    // The accumulation: `film` holds film.samples() samples per pixel of `job` (core restarts it
+    // when a pass is cancelled, and a restart costs nothing).
     RenderJob job;
     uint64_t takenSerial = 0;
-    std::vector<glm::vec3> sums;
-    bool sumsValid = false;
-    uint32_t samples = 0;
+    Film film;
+    bool filmValid = false;
     bool previewTried = false;
     double secondsPerPixel = 0.0; // measured by the last pass, 0 before any
     uint64_t published = 0;
-    std::vector<glm::vec3> previewSums;
+    Film previewFilm;
     std::vector<uint8_t> previewBgra;
     ShownImage staging;
 
@@ -187,24 +175,26 @@ void RenderWorker::run() {
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] {
-                return quit_ || (job_.scene &&
-                                 (jobSerial_ != takenSerial ||
-                                  samples < static_cast<uint32_t>(job_.settings.samplesPerPixel)));
+                return quit_ ||
+                       (job_.scene &&
+                        (jobSerial_ != takenSerial ||
+                         film.samples() < static_cast<uint32_t>(job_.settings.samplesPerPixel)));
             });
             if (quit_) {
                 return;
             }
-            const bool restart = !sumsValid || !samePicture(job_, job) ||
-                                 static_cast<uint32_t>(job_.settings.samplesPerPixel) < samples;
+            const bool restart =
+                !filmValid || !samePicture(job_, job) ||
+                static_cast<uint32_t>(job_.settings.samplesPerPixel) < film.samples();
             job = job_;
             serial = takenSerial = jobSerial_;
             cancel_.store(false);
             if (restart) {
-                sums.resize(pixelCount(job.settings));
-                sumsValid = true;
-                samples = 0;
+                film.reset(job.settings.width, job.settings.height, filmLayersFor(job.settings));
+                filmValid = true;
                 previewTried = false;
             }
+            const uint32_t samples = film.samples();
             // Decided with the job, under the same lock, so no submit slips in between. A pass
             // of unknown cost (none measured yet) counts as too long.
             const double expected = secondsPerPixel * static_cast<double>(pixelCount(job.settings));
@@ -215,8 +205,9 @@ void RenderWorker::run() {
         const LoadedScene& loaded = *job.scene;
         PassOptions pass;
         pass.cancel = &cancel_;
+        pass.emitters = &loaded.emitters;
 
-        if (samples == 0 && !previewTried) {
+        if (film.samples() == 0 && !previewTried) {
             previewTried = true;
             const int k = previewDivisor(
                 secondsPerPixel * static_cast<double>(pixelCount(settings)), previewBudgetSeconds_);
@@ -224,12 +215,12 @@ void RenderWorker::run() {
                 RenderSettings small = settings;
                 small.width = (settings.width + k - 1) / k;
                 small.height = (settings.height + k - 1) / k;
-                previewSums.resize(pixelCount(small));
+                previewFilm.reset(small.width, small.height, filmLayersFor(small));
                 RayCounts counts;
                 const auto start = Clock::now();
                 setInPreview(true);
                 const bool finished =
-                    accumulatePass(loaded.scene, loaded.bvh, small, 0, previewSums, &counts, pass);
+                    renderPass(loaded.scene, loaded.bvh, small, previewFilm, &counts, pass);
                 setInPreview(false);
                 if (!finished) {
                     tally(&PassTotals::previews, -1.0);
@@ -239,8 +230,8 @@ void RenderWorker::run() {
                 tally(&PassTotals::previews, seconds);
                 secondsPerPixel = seconds / static_cast<double>(pixelCount(small));
                 previewBgra.resize(4 * pixelCount(small));
-                toRgba8(previewSums, 1.0f, settings.display, settings.exposure, previewBgra,
-                        PixelOrder::Bgra);
+                previewFilm.toDisplay(previewBgra, settings.display, settings.exposure,
+                                      PixelOrder::Bgra);
                 enlarge(previewBgra, small.width, small.height, settings.width, settings.height,
                         staging.bgra);
                 staging.linear = Framebuffer();
@@ -259,7 +250,7 @@ void RenderWorker::run() {
         double seconds = 0.0;
         RayCounts counts;
         bool displayed = false; // staging.bgra already shows the sums
-        if (samples < static_cast<uint32_t>(settings.samplesPerPixel)) {
+        if (film.samples() < static_cast<uint32_t>(settings.samplesPerPixel)) {
             // The pass writes the display bytes tile by tile, on the tracing threads.
             staging.bgra.pixels.resize(4 * pixelCount(settings));
             PassOptions full = pass;
@@ -267,17 +258,15 @@ void RenderWorker::run() {
             full.displayOrder = PixelOrder::Bgra;
             const auto start = Clock::now();
             const bool complete =
-                accumulatePass(loaded.scene, loaded.bvh, settings, samples, sums, &counts, full);
+                renderPass(loaded.scene, loaded.bvh, settings, film, &counts, full);
             setInShortFirstPass(false);
             if (!complete) {
-                sumsValid = false; // partly updated: worthless, whatever the next job is
                 tally(&PassTotals::passes, -1.0);
                 continue;
             }
             seconds = secondsSince(start);
             tally(&PassTotals::passes, seconds);
             secondsPerPixel = seconds / static_cast<double>(pixelCount(settings));
-            ++samples;
             displayed = true;
         }
         // A new pass, or a new job that keeps the samples (display, cap, threads): show it.
@@ -285,18 +274,17 @@ void RenderWorker::run() {
         staging.bgra.height = settings.height;
         if (!displayed) {
             staging.bgra.pixels.resize(4 * pixelCount(settings));
-            toRgba8(sums, 1.0f / static_cast<float>(samples), settings.display, settings.exposure,
-                    staging.bgra.pixels, PixelOrder::Bgra);
+            film.toDisplay(staging.bgra.pixels, settings.display, settings.exposure,
+                           PixelOrder::Bgra);
         }
         if (job.keepLinear) {
-            // The same arithmetic as core's render(): sum * (1 / n).
-            const float scale = 1.0f / static_cast<float>(samples);
-            staging.linear = Framebuffer(settings.width, settings.height);
-            std::transform(sums.begin(), sums.end(), staging.linear.pixels.begin(),
-                           [scale](const glm::vec3& sum) { return sum * scale; });
+            film.mean(staging.linear);
         } else {
             staging.linear = Framebuffer();
         }
+        const uint32_t samples = film.samples();
+        staging.noise = film.noise();
+        staging.meanIndirect = film.meanIndirect();
         staging.settings = settings;
         staging.settings.samplesPerPixel = static_cast<int>(samples);
         staging.scene = job.scene;

@@ -1,5 +1,5 @@
 #pragma once
-// The render thread. It owns an accumulation buffer of sums and, while the job does not change,
+// The render thread. It owns the picture's Film (core) and, while the job does not change,
 // adds one sample per pixel per pass (sample 0 is the pixel centre, later ones jittered) until
 // the job's sample cap; then it sleeps on a condition variable (no CPU use). A new job that changes
 // the picture cancels the pass in flight (an atomic flag checked between tiles) and restarts; a
@@ -14,7 +14,7 @@
 // it fits the budget: while the camera moves faster than passes finish, every pass still ends in
 // a picture (at most one budget late) instead of being thrown away for the next step.
 //
-// Threads: accumulatePass runs settings.threads workers and this thread is one of them.
+// Threads: renderPass runs settings.threads workers and this thread is one of them.
 
 #include "loaded_scene.h"
 #include "run_stats.h"
@@ -38,8 +38,8 @@ struct RenderJob {
     bool keepLinear = false; // also publish the linear picture (for PFM/EXR screenshots)
 };
 
-// True when two jobs give the same accumulated samples (scene, camera, light, indirect, shadows,
-// size); display, exposure, cap and thread count do not change the samples.
+// True when two jobs give the same accumulated samples: the same scene and sameSamples() settings
+// (display, exposure, cap and thread count do not change the samples).
 bool samePicture(const RenderJob& a, const RenderJob& b);
 // True when every field of the two jobs is equal (keepLinear aside).
 bool sameJob(const RenderJob& a, const RenderJob& b);

@@ -2,7 +2,8 @@
 // One finished picture of the render thread, as the window shows it (the "image block" the UI
 // thread reads under a mutex, like Nori's).
 
-#include "core/framebuffer.h"
+#include "core/render/film.h"
+#include "core/render/framebuffer.h"
 #include "core/render_settings.h"
 #include "io/image_io.h"
 #include "loaded_scene.h"
@@ -29,8 +30,10 @@ struct ShownImage {
     bool preview = false;       // a coarse preview upscaled to render resolution: not reproducible
     bool final = false;         // samples reached the job's cap: nothing more will change
     double passSeconds = 0.0;   // wall clock of the pass that produced it
-    double raysPerSecond = 0.0; // primary + shadow rays of that pass per second
-    uint64_t serial = 0;        // increases with every picture published
+    double raysPerSecond = 0.0; // every ray of that pass (camera, shadow, bounce) per second
+    NoiseEstimate noise;        // the film's remaining noise (path integrator), Film::noise()
+    glm::vec3 meanIndirect{0.0f}; // the path integrator's mean N, Film::meanIndirect()
+    uint64_t serial = 0;          // increases with every picture published
 };
 
 // The picture with its bytes in RGBA order (for image files).

@@ -6,8 +6,8 @@
 #include "accel_scenes.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
-#include "core/lab_shading.h"
-#include "core/lab_shading_stages.h"
+#include "core/integrators/lab_shading.h"
+#include "core/integrators/lab_shading_stages.h"
 
 #include <cmath>
 #include <cstring>

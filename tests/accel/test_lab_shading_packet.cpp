@@ -3,7 +3,7 @@
 #include "accel_scenes.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
-#include "core/lab_shading.h"
+#include "core/integrators/lab_shading.h"
 
 #include <cstring>
 #include <gtest/gtest.h>

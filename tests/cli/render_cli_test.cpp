@@ -3,7 +3,7 @@
 
 #include "core/bvh.h"
 #include "core/cornell_box.h"
-#include "core/renderer.h"
+#include "core/render/renderer.h"
 #include "io/image_io.h"
 #include "temp_dir_test.h"
 #include "test_assets.h"

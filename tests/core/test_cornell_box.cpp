@@ -2,7 +2,7 @@
 
 #include "core/bvh.h"
 #include "core/cornell_box.h"
-#include "core/renderer.h"
+#include "core/render/renderer.h"
 
 #include <gtest/gtest.h>
 

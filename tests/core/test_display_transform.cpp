@@ -1,8 +1,8 @@
 // Display transforms: the lab's clamp and sRGB with exposure.
 
 #include "core/bvh.h"
-#include "core/display_transform.h"
-#include "core/srgb_quantizer.h"
+#include "core/render/display_transform.h"
+#include "core/render/srgb_quantizer.h"
 
 #include <cmath>
 #include <cstring>

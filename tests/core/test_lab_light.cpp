@@ -2,7 +2,7 @@
 // the camera, a point light, and (for shadows) a small square blocker.
 
 #include "core/bvh.h"
-#include "core/renderer.h"
+#include "core/render/renderer.h"
 #include "test_meshes.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // The tile loop: every pixel exactly once, for any size and thread count; cancellation.
 
-#include "core/parallel_tiles.h"
+#include "core/render/parallel_tiles.h"
 
 #include <atomic>
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 // The renderer's SIMD paths against their scalar references, bit for bit: 8-lane ray generation
 // (PrimaryRays::through8 == through), 8-lane shading (shadeLab8 == shadeLab) and a whole pass
-// (every pixel of accumulatePass == shadeLab of the ray through its sample point, stored or
+// (every pixel of renderPass == shadeLab of the ray through its sample point, stored or
 // added to the sums before).
 
 #include "core/bvh.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
-#include "core/renderer.h"
+#include "core/render/renderer.h"
 #include "core/sampling/hash.h"
 
 #include <cstring>
@@ -122,14 +122,16 @@ TEST(RenderSimd, EveryPixelOfAPassIsShadeLabOfItsSampleRay) {
                          static_cast<float>((x * 31 + y) % 11) * 0.125f);
     };
     for (uint32_t sample : {0u, 1u, 5u}) {
-        std::vector<glm::vec3> sums(static_cast<std::size_t>(s.width * s.height));
+        Film film(s.width, s.height);
+        const std::span<glm::vec3> sums = film.sums();
         for (int y = 0; y < s.height; ++y) {
             for (int x = 0; x < s.width; ++x) {
                 sums[static_cast<std::size_t>(y * s.width + x)] =
                     sample == 0 ? glm::vec3(-1e30f) : earlier(x, y);
             }
         }
-        ASSERT_TRUE(accumulatePass(scene, bvh, s, sample, sums));
+        film.resume(sample);
+        ASSERT_TRUE(renderPass(scene, bvh, s, film));
         RayCounts counts;
         for (int y = 0; y < s.height; ++y) {
             for (int x = 0; x < s.width; ++x) {

@@ -2,8 +2,8 @@
 
 #include "core/bvh.h"
 #include "core/cornell_box.h"
-#include "core/display_transform.h"
-#include "core/renderer.h"
+#include "core/render/display_transform.h"
+#include "core/render/renderer.h"
 #include "core/sampling/hash.h"
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <gtest/gtest.h>
+#include <utility>
 
 namespace raylab {
 namespace {
@@ -46,19 +47,26 @@ TEST(Renderer, DisplayBytesWrittenDuringThePassAreThoseOfTheSums) {
         s.display = mode;
         s.exposure = 0.5f;
         s.threads = 2;
-        std::vector<glm::vec3> sums(83 * 45, glm::vec3(0.0f));
-        std::vector<uint8_t> during(4 * sums.size(), 7);
-        std::vector<uint8_t> after(4 * sums.size());
-        for (uint32_t sample = 0; sample < 3; ++sample) {
-            PassOptions options;
-            options.displayRgba = during;
-            ASSERT_TRUE(accumulatePass(scene, bvh, s, sample, sums, nullptr, options));
-            toRgba8(sums, 1.0f / static_cast<float>(sample + 1), mode, s.exposure, after);
-            ASSERT_EQ(during, after) << "sample " << sample;
+        for (Integrator integrator : {Integrator::Lab, Integrator::Path}) {
+            s.integrator = integrator;
+            Film film(83, 45, filmLayersFor(s));
+            std::vector<uint8_t> during(4 * film.pixelCount(), 7);
+            std::vector<uint8_t> after(4 * film.pixelCount());
+            for (uint32_t sample = 0; sample < 3; ++sample) {
+                PassOptions options;
+                options.displayRgba = during;
+                ASSERT_TRUE(renderPass(scene, bvh, s, film, nullptr, options));
+                ASSERT_EQ(film.samples(), sample + 1);
+                toRgba8(film.sums(), 1.0f / static_cast<float>(sample + 1), mode, s.exposure,
+                        after);
+                ASSERT_EQ(during, after) << "sample " << sample;
+                film.toDisplay(after, mode, s.exposure);
+                ASSERT_EQ(during, after) << "sample " << sample;
+            }
+            EXPECT_GT(std::count(after.begin(), after.end(), 0), 0); // not a blank picture
+            EXPECT_GT(std::count_if(after.begin(), after.end(), [](uint8_t v) { return v > 20; }),
+                      1000);
         }
-        EXPECT_GT(std::count(after.begin(), after.end(), 0), 0); // not a blank picture
-        EXPECT_GT(std::count_if(after.begin(), after.end(), [](uint8_t v) { return v > 20; }),
-                  1000);
     }
 }
 
@@ -90,21 +98,25 @@ TEST(Renderer, OneSampleIsTheLabsCentredRayAndMoreSamplesAverageJitteredOnes) {
     // N samples = the sums of passes 0..N-1 times 1/N, which is what the viewer shows.
     s.samplesPerPixel = 4;
     const Framebuffer four = render(scene, bvh, s);
-    std::vector<glm::vec3> sums(64 * 64, glm::vec3(0.0f));
+    Film film(64, 64);
     for (uint32_t pass = 0; pass < 4; ++pass) {
-        ASSERT_TRUE(accumulatePass(scene, bvh, s, pass, sums));
+        ASSERT_TRUE(renderPass(scene, bvh, s, film));
     }
+    const std::span<const glm::vec3> sums = std::as_const(film).sums();
     for (std::size_t i = 0; i < sums.size(); ++i) {
         ASSERT_EQ(four.pixels[i], sums[i] * 0.25f);
     }
+    EXPECT_TRUE(sameBits(film.mean(), four));
     EXPECT_FALSE(sameBits(one, four)) << "jittered samples must smooth the edges";
 
     // Sample 0 stores: sums left over from another picture (or garbage) need no clearing.
-    std::vector<glm::vec3> stale(64 * 64, glm::vec3(1e30f, -7.0f, std::nanf("")));
+    Film stale(64, 64);
+    std::fill(stale.sums().begin(), stale.sums().end(), glm::vec3(1e30f, -7.0f, std::nanf("")));
     for (uint32_t pass = 0; pass < 4; ++pass) {
-        ASSERT_TRUE(accumulatePass(scene, bvh, s, pass, stale));
+        ASSERT_TRUE(renderPass(scene, bvh, s, stale));
     }
-    ASSERT_EQ(0, std::memcmp(stale.data(), sums.data(), sums.size() * sizeof(glm::vec3)));
+    ASSERT_EQ(0, std::memcmp(std::as_const(stale).sums().data(), sums.data(),
+                             sums.size() * sizeof(glm::vec3)));
 }
 
 TEST(Renderer, SampleOffsetsAreCentredFirstThenDistinctInsideThePixel) {
@@ -131,14 +143,15 @@ TEST(Renderer, ACancelledPassStopsAndSaysSo) {
     const Scene scene = makeCornellBox();
     const Bvh bvh = buildBvh(scene);
     RenderSettings s;
-    std::vector<glm::vec3> sums(500 * 500, glm::vec3(0.0f));
+    Film film(500, 500);
+    std::fill(film.sums().begin(), film.sums().end(), glm::vec3(0.0f));
+    ASSERT_TRUE(renderPass(scene, bvh, s, film));
     std::atomic<bool> cancel{true};
     PassOptions options;
     options.cancel = &cancel;
-    EXPECT_FALSE(accumulatePass(scene, bvh, s, 0, sums, nullptr, options));
-    for (const glm::vec3& p : sums) {
-        ASSERT_EQ(p, glm::vec3(0.0f));
-    }
+    EXPECT_FALSE(renderPass(scene, bvh, s, film, nullptr, options));
+    // A cancelled pass restarts the film: its sums are worthless.
+    EXPECT_EQ(film.samples(), 0u);
 }
 
 TEST(Renderer, ProgressRisesToOne) {

@@ -1,7 +1,7 @@
 // The table-driven sRGB quantizer against the pow formula it replaces, float by float.
 
-#include "core/display_transform.h"
-#include "core/srgb_quantizer.h"
+#include "core/render/display_transform.h"
+#include "core/render/srgb_quantizer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // are validated, keys move what they say, screenshots never overwrite.
 
 #include "core/cornell_box.h"
-#include "core/display_transform.h"
-#include "core/renderer.h"
+#include "core/render/display_transform.h"
+#include "core/render/renderer.h"
 #include "io/image_io.h"
 #include "io/settings_json.h"
 #include "navigation.h"

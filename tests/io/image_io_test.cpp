@@ -1,7 +1,7 @@
 // Image files: PNG round trip with text chunks, PFM bit-exact with its bottom-to-top rows, EXR
 // round trip, and failed writes that name the path and leave nothing behind.
 
-#include "core/display_transform.h"
+#include "core/render/display_transform.h"
 #include "io/image_io.h"
 #include "temp_dir_test.h"
 

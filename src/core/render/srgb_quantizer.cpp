@@ -1,4 +1,4 @@
-#include "srgb_quantizer.h"
+#include "render/srgb_quantizer.h"
 
 #include <cassert>
 #include <cmath>

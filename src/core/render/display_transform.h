@@ -1,7 +1,7 @@
 #pragma once
 // Turns linear radiance into 8-bit display values.
 
-#include "framebuffer.h"
+#include "render/framebuffer.h"
 #include "render_settings.h"
 
 #include <cstdint>

@@ -8,8 +8,8 @@
 // throughout.
 
 #include "bvh_packet.h"
-#include "lab_shading.h"
-#include "lab_shading_stages.h"
+#include "integrators/lab_shading.h"
+#include "integrators/lab_shading_stages.h"
 #include "watertight_avx2.h"
 
 #include <cstddef>

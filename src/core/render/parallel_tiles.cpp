@@ -1,4 +1,4 @@
-#include "parallel_tiles.h"
+#include "render/parallel_tiles.h"
 
 #include <algorithm>
 #include <thread>

@@ -1,7 +1,7 @@
-#include "display_transform.h"
+#include "render/display_transform.h"
 
 #include "bvh.h"
-#include "srgb_quantizer.h"
+#include "render/srgb_quantizer.h"
 #include "watertight_avx2.h"
 
 #include <algorithm>

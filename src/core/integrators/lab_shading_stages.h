@@ -3,7 +3,7 @@
 // where bvhSimdSupported()), so that a group of packets can trace its shadow rays together
 // (shadeLabBlock).
 
-#include "lab_shading.h"
+#include "integrators/lab_shading.h"
 #include "ray_packet.h"
 
 namespace raylab {

@@ -10,6 +10,7 @@
 
 #include "bvh.h"
 #include "bvh_frustum.h"
+#include "lights/point_light.h"
 #include "ray_packet.h"
 #include "render_settings.h"
 #include "scene.h"
@@ -22,6 +23,9 @@ namespace raylab {
 struct RayCounts {
     std::uint64_t primary = 0;
     std::uint64_t shadow = 0;
+    std::uint64_t bounce = 0; // the path integrator's indirect rays
+
+    std::uint64_t total() const { return primary + shadow + bounce; }
 };
 
 // The surface a camera ray hit: where, its facing normal nhat and its diffuse colour rho.
@@ -33,16 +37,6 @@ struct SurfacePoint {
 
 // `hit` must be found() for `ray`.
 SurfacePoint surfaceAt(const Scene& scene, const Ray& ray, const Hit& hit);
-
-// The direct light D at a point before the shadow test, and the shadow ray that decides it.
-struct LightSample {
-    glm::vec3 direct{0.0f};      // D when unshadowed; 0 when facing away or at the light
-    bool needsShadowRay = false; // settings.shadows and direct may be non-zero
-    Ray shadowRay;               // towards the light, eps < t < |r| - eps (when needed)
-};
-
-LightSample lightAt(const RenderSettings& settings, const glm::vec3& point,
-                    const glm::vec3& facingNormal);
 
 // R = rho * (D + N).
 glm::vec3 labRadiance(const RenderSettings& settings, const glm::vec3& rho,

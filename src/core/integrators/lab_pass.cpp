@@ -1,13 +1,13 @@
-#include "renderer.h"
+#include "integrators/lab_pass.h"
 
 #include "bvh_packet.h"
 #include "camera.h"
-#include "display_transform.h"
-#include "parallel_tiles.h"
+#include "render/parallel_tiles.h"
 #include "sampling/hash.h"
 #include "watertight_avx2.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 
 namespace raylab {
@@ -105,18 +105,29 @@ inline void storeOrAdd(const RadiancePacket& radiance, int count, bool first, gl
     }
 }
 
+// storeOrAdd of the squares of the lanes (the film's moments).
+inline void storeOrAddSquares(const RadiancePacket& radiance, int count, bool first,
+                              glm::vec3* row) {
+    for (int i = 0; i < count; ++i) {
+        const glm::vec3 v(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
+        row[i] = first ? v * v : row[i] + v * v;
+    }
+}
+
 } // namespace
 
-bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                    uint32_t sampleIndex, std::span<glm::vec3> sums, RayCounts* counts,
-                    const PassOptions& options) {
+bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
+             RayCounts* counts, const PassOptions& options) {
     const int width = settings.width;
+    const uint32_t sampleIndex = film.samples();
+    const std::span<glm::vec3> sums = film.sums();
+    const std::span<glm::vec3> squares = film.squares();
     const PrimaryRays rays(settings.camera, width, settings.height);
     std::atomic<uint64_t> primary{0};
     std::atomic<uint64_t> shadow{0};
     const uint32_t sampleSeed = hash32(sampleIndex);
     static const bool simd = bvhSimdSupported();
-    // The same operation the viewer and render() apply to sums: sum * (1 / n).
+    // Film::scale() once this sample is counted: sum * (1 / n).
     const float displayScale = 1.0f / static_cast<float>(sampleIndex + 1);
     assert(options.displayRgba.empty() ||
            options.displayRgba.size() >= 4 * static_cast<std::size_t>(width) * settings.height);
@@ -161,11 +172,14 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
                 shadeLabBlock(scene, bvh, settings, rays, rect, packets, rows, radiance,
                               tileCounts);
                 for (int r = 0; r < rows; ++r) {
-                    glm::vec3* row = &sums[static_cast<std::size_t>(y0 + r) * width + x0];
+                    const std::size_t first = static_cast<std::size_t>(y0 + r) * width + x0;
                     if (simd && count == kPacketSize) {
-                        storeOrAdd8(radiance[r], sampleIndex == 0, row);
+                        storeOrAdd8(radiance[r], sampleIndex == 0, &sums[first]);
                     } else {
-                        storeOrAdd(radiance[r], count, sampleIndex == 0, row);
+                        storeOrAdd(radiance[r], count, sampleIndex == 0, &sums[first]);
+                    }
+                    if (!squares.empty()) {
+                        storeOrAddSquares(radiance[r], count, sampleIndex == 0, &squares[first]);
                     }
                 }
             }
@@ -186,29 +200,10 @@ bool accumulatePass(const Scene& scene, const Bvh& bvh, const RenderSettings& se
         counts->primary += primary.load();
         counts->shadow += shadow.load();
     }
+    if (complete) {
+        film.passFinished();
+    }
     return complete;
-}
-
-Framebuffer render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                   RayCounts* counts, const PassOptions& options) {
-    Framebuffer image(settings.width, settings.height);
-    const int samples = settings.samplesPerPixel;
-    for (int s = 0; s < samples; ++s) {
-        PassOptions pass = options;
-        if (options.progress) {
-            pass.progress = [&](double fraction) { options.progress((s + fraction) / samples); };
-        }
-        if (!accumulatePass(scene, bvh, settings, static_cast<uint32_t>(s), image.pixels, counts,
-                            pass)) {
-            break;
-        }
-    }
-    // The same operation the viewer applies to its sums (sum * (1 / n)), so both give equal bytes.
-    const float scale = 1.0f / static_cast<float>(samples);
-    for (glm::vec3& p : image.pixels) {
-        p *= scale;
-    }
-    return image;
 }
 
 } // namespace raylab

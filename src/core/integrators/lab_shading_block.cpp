@@ -5,8 +5,8 @@
 
 #include "bvh_frustum.h"
 #include "bvh_packet.h"
-#include "lab_shading.h"
-#include "lab_shading_stages.h"
+#include "integrators/lab_shading.h"
+#include "integrators/lab_shading_stages.h"
 
 #include <array>
 #include <utility>

@@ -1,0 +1,43 @@
+#pragma once
+// The path integrator, in the lab's units (DESIGN.md section 5): at each surface point x
+//   R(x) = E(x) + rho(x) * (D(x) + N(x)),   N(x) = (1/pi) * integral of R(y) cos(theta) dw,
+// E the emitted R (pi * Le, front faces only), D the direct light from the lab's light (point or
+// sphere, with the lab's shadow test and eps) and from emitting triangles, y the first surface
+// seen in direction w over the hemisphere facing the incoming ray (0 where the ray leaves the
+// scene). Diffuse surfaces only; both faces reflect.
+//
+// Emitting triangles reach D two ways, combined by multiple importance sampling (the power
+// heuristic): sampled directly (next-event estimation, a triangle chosen by power) and hit by
+// chance by the cosine-weighted bounce. The lab's light is only sampled (it is not geometry).
+
+#include "bvh.h"
+#include "integrators/lab_shading.h"
+#include "lights/emitters.h"
+#include "render_settings.h"
+#include "sampling/sampler.h"
+#include "scene.h"
+
+#include <glm/vec3.hpp>
+
+namespace raylab {
+
+// What one path adds to its pixel.
+struct PathSample {
+    glm::vec3 radiance{0.0f}; // R along the camera ray
+    glm::vec3 indirect{0.0f}; // the estimate of N at the first surface (0 on a miss)
+    bool hit = false;         // the camera ray hit a surface
+};
+
+// The sampler's dimension pairs: pair 0 is the pixel position (the caller's); vertex k of a path
+// (0 = where the camera ray lands) uses pairs kPathFirstPair + kPathPairsPerVertex * k + j.
+inline constexpr uint32_t kPathFirstPair = 1;
+inline constexpr uint32_t kPathPairsPerVertex = 4;
+
+// One sample of R along cameraRay. `emitters` is buildEmitterTable(scene) (empty for a scene with
+// none). Counts the camera ray as primary, shadow rays as shadow and bounce rays as bounce.
+// Deterministic in (sampler, arguments).
+PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
+                     const RenderSettings& settings, const Ray& cameraRay,
+                     const PixelSampler& sampler, RayCounts& counts);
+
+} // namespace raylab

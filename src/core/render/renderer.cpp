@@ -1,0 +1,60 @@
+#include "render/renderer.h"
+
+#include "integrators/lab_pass.h"
+#include "integrators/sampled_pass.h"
+
+#include <cassert>
+
+namespace raylab {
+
+FilmLayers filmLayersFor(const RenderSettings& settings) {
+    const bool path = settings.integrator == Integrator::Path;
+    return FilmLayers{path, path};
+}
+
+bool renderPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
+                RayCounts* counts, const PassOptions& options) {
+    assert(film.width() == settings.width && film.height() == settings.height);
+    bool complete = false;
+    const bool emitting = hasEmittingMaterial(scene);
+    if (settings.integrator == Integrator::Lab && settings.light.radius == 0.0f && !emitting) {
+        complete = labPass(scene, bvh, settings, film, counts, options);
+    } else {
+        EmitterTable built;
+        const EmitterTable* emitters = options.emitters;
+        if (!emitters) {
+            if (emitting) {
+                built = buildEmitterTable(scene);
+            }
+            emitters = &built;
+        }
+        complete = sampledPass(scene, bvh, *emitters, settings, film, counts, options);
+    }
+    if (!complete) {
+        film.restart();
+    }
+    return complete;
+}
+
+Framebuffer render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                   RayCounts* counts, const PassOptions& options) {
+    Film film(settings.width, settings.height);
+    PassOptions pass = options;
+    EmitterTable emitters;
+    if (!pass.emitters && hasEmittingMaterial(scene)) {
+        emitters = buildEmitterTable(scene);
+        pass.emitters = &emitters;
+    }
+    const int samples = settings.samplesPerPixel;
+    for (int s = 0; s < samples; ++s) {
+        if (options.progress) {
+            pass.progress = [&](double fraction) { options.progress((s + fraction) / samples); };
+        }
+        if (!renderPass(scene, bvh, settings, film, counts, pass)) {
+            break;
+        }
+    }
+    return film.mean();
+}
+
+} // namespace raylab
