@@ -3,12 +3,16 @@
 // error is one line on stderr and leaves no output file behind.
 
 #include "core/bvh.h"
+#include "core/lights/emitters.h"
+#include "core/render/film.h"
+#include "core/render/image_error.h"
 #include "core/render/renderer.h"
 #include "io/atomic_file.h"
 #include "io/command_line.h"
 #include "io/image_io.h"
 #include "io/mesh_loader.h"
 #include "io/settings_json.h"
+#include "io/text_util.h"
 
 #include <chrono>
 #include <cstdio>
@@ -63,6 +67,24 @@ private:
     int lastPercent_ = -1;
 };
 
+// Reads a linear reference picture (.pfm or .exr) for --reference.
+bool readReference(const std::string& path, raylab::Framebuffer& image, std::string& error) {
+    const std::string lower = raylab::lowerCase(path);
+    const auto endsWith = [&lower](const char* suffix) {
+        const std::string end(suffix);
+        return lower.size() >= end.size() &&
+               lower.compare(lower.size() - end.size(), end.size(), end) == 0;
+    };
+    if (endsWith(".pfm")) {
+        return raylab::readPfm(path, image, error);
+    }
+    if (endsWith(".exr")) {
+        return raylab::readExr(path, image, error);
+    }
+    error = "reference '" + path + "': unsupported format (use .pfm or .exr)";
+    return false;
+}
+
 int run(int argc, char** argv) {
     CommandLine cl;
     std::string error;
@@ -102,15 +124,51 @@ int run(int argc, char** argv) {
     const auto start = Clock::now();
     const double buildSeconds = std::chrono::duration<double>(start - buildStart).count();
 
+    // --reference: the converged picture the samples' error is measured against, read first so
+    // that a bad file fails before the render.
+    raylab::Framebuffer reference;
+    if (!cl.reference.empty()) {
+        if (!readReference(cl.reference, reference, error)) {
+            return fail(1, error);
+        }
+        if (reference.width != settings.width || reference.height != settings.height) {
+            return fail(1,
+                        "reference '" + cl.reference + "' is " + std::to_string(reference.width) +
+                            "x" + std::to_string(reference.height) + ", the render is " +
+                            std::to_string(settings.width) + "x" + std::to_string(settings.height));
+        }
+    }
+
     raylab::RayCounts counts;
-    raylab::Framebuffer image;
+    raylab::Film film(settings.width, settings.height, raylab::filmLayersFor(settings));
+    const raylab::EmitterTable emitters = raylab::buildEmitterTable(scene);
+    double referenceSeconds = 0.0; // time spent measuring errors, left out of the render's time
     {
         ProgressLine progress; // erased at the end of this block
         raylab::PassOptions passOptions;
-        passOptions.progress = [&progress](double fraction) { progress.update(fraction); };
-        image = raylab::render(scene, bvh, settings, &counts, passOptions);
+        passOptions.emitters = &emitters;
+        const int samples = settings.samplesPerPixel;
+        for (int sample = 0; sample < samples; ++sample) {
+            passOptions.progress = [&progress, sample, samples](double fraction) {
+                progress.update((sample + fraction) / samples);
+            };
+            raylab::renderPass(scene, bvh, settings, film, &counts, passOptions);
+            const int done = sample + 1;
+            if (!reference.pixels.empty() && ((done & (done - 1)) == 0 || done == samples)) {
+                const auto measureStart = Clock::now();
+                const double seconds =
+                    std::chrono::duration<double>(measureStart - start).count() - referenceSeconds;
+                const double rmse = raylab::relativeRmse(film.mean(), reference);
+                std::printf("%d spp  relative RMSE %.6f  %.3f s\n", done, rmse, seconds);
+                std::fflush(stdout);
+                referenceSeconds +=
+                    std::chrono::duration<double>(Clock::now() - measureStart).count();
+            }
+        }
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const raylab::Framebuffer image = film.mean();
+    const double seconds =
+        std::chrono::duration<double>(Clock::now() - start).count() - referenceSeconds;
 
     const std::string json = raylab::settingsToJson(settings, cl.scene);
     if (!raylab::writeImage(cl.output, image, settings.display, settings.exposure, error,

@@ -1,6 +1,7 @@
 #include "scene_framing.h"
 
 #include "camera.h"
+#include "lights/emitters.h"
 #include "scene_view_side.h"
 
 #include <algorithm>
@@ -50,10 +51,13 @@ void frameScene(const Scene& scene, RenderSettings& settings) {
     settings.camera.position = center - distance * forward;
 
     // Above and in front, outside the bounding sphere; power so that the centre receives the
-    // lab's irradiance: E = P / (4 pi d^2) with d^2 = 2 radius^2.
+    // lab's irradiance: E = P / (4 pi d^2) with d^2 = 2 radius^2. A scene with emitting
+    // materials lights itself: its light starts at power 0.
     settings.light.position = center + glm::vec3(0.0f, radius, 0.0f) - radius * forward;
     settings.light.color = glm::vec3(1.0f);
-    settings.light.intensity = kFramedIrradiance * 4.0f * 3.14159265f * 2.0f * radius * radius;
+    settings.light.intensity = hasEmittingMaterial(scene) ? 0.0f
+                                                          : kFramedIrradiance * 4.0f * 3.14159265f *
+                                                                2.0f * radius * radius;
 
     settings.shadowEpsilon = scaledShadowEpsilon(bounds);
 }

@@ -213,9 +213,49 @@ const std::vector<Option>& options() {
              s.out.settings.shadows = false;
              return {};
          }},
-        {"--no-indirect", nullptr, kAll, "no indirect term",
+        {"--no-indirect", nullptr, kAll,
+         "no indirect term (the path integrator: direct light only)",
          [](const std::string&, ParseState& s) -> std::string {
              s.out.settings.indirect = false;
+             return {};
+         }},
+        {"--light-radius", "R", kAll,
+         "light radius in world units, >= 0: a sphere of the same power (default 0, a point)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float radius = 0.0f;
+             if (!parseFloat(v, radius) || radius < 0.0f) {
+                 return expected("a finite radius >= 0", v);
+             }
+             s.out.settings.light.radius = radius;
+             return {};
+         }},
+        {"--integrator", "lab|path", kRender | kViewer,
+         "light transport: the lab's constant indirect term, or path tracing (default lab)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseIntegrator(lowerCase(v), s.out.settings.integrator)) {
+                 return expected("lab or path", v);
+             }
+             return {};
+         }},
+        {"--max-bounces", "N", kRender | kViewer,
+         "path integrator: indirect bounces, 0 = direct light only (default 8)",
+         settingsIntIn(0, kMaxBounces, &RenderSettings::maxBounces)},
+        {"--emission-scale", "S", kRender | kViewer,
+         "multiplies the emission of the scene's emitting materials, >= 0 (default 1)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float scale = 0.0f;
+             if (!parseFloat(v, scale) || scale < 0.0f) {
+                 return expected("a finite number >= 0", v);
+             }
+             s.out.settings.emissionScale = scale;
+             return {};
+         }},
+        {"--sampler", "sobol|independent", kRender | kViewer,
+         "random numbers of the path integrator and the sphere light (default sobol)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseSamplerKind(lowerCase(v).c_str(), s.out.settings.sampler)) {
+                 return expected("sobol or independent", v);
+             }
              return {};
          }},
         {"--spp", "N", kAll, "samples per pixel, 1 = the lab's centred ray (default 1)",
@@ -253,6 +293,15 @@ const std::vector<Option>& options() {
                  return unsupportedImageReason(v);
              }
              s.out.output = v;
+             return {};
+         }},
+        {"--reference", "FILE", kRender,
+         "a converged .pfm or .exr of the same size: print the relative RMSE at 1, 2, 4, ... spp",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (v.empty()) {
+                 return "expected a file name";
+             }
+             s.out.reference = v;
              return {};
          }},
         {"--frames", "N", kViewer, "quit after N frames (0 = run until closed)",

@@ -39,6 +39,7 @@ struct CommandLine {
     bool help = false;
     std::string output;       // render: -o FILE
     std::string saveSettings; // --save-settings FILE.json
+    std::string reference;    // render: --reference FILE.pfm|.exr
     // viewer
     int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
     std::string screenshot;          // --screenshot FILE: save the last shown frame

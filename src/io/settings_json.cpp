@@ -45,7 +45,8 @@ OrderedJson toJson(const RenderSettings& s) {
                    {"fov", shortFloat(s.camera.verticalFovDegrees)}};
     j["light"] = {{"position", vec3Json(s.light.position)},
                   {"color", vec3Json(s.light.color)},
-                  {"intensity", shortFloat(s.light.intensity)}};
+                  {"intensity", shortFloat(s.light.intensity)},
+                  {"radius", shortFloat(s.light.radius)}};
     j["indirect"] = {{"enabled", s.indirect},
                      {"color", vec3Json(s.indirectColor)},
                      {"intensity", shortFloat(s.indirectIntensity)}};
@@ -53,6 +54,10 @@ OrderedJson toJson(const RenderSettings& s) {
     j["image"] = {{"width", s.width}, {"height", s.height}, {"samples", s.samplesPerPixel}};
     j["threads"] = s.threads;
     j["display"] = {{"mode", toString(s.display)}, {"exposure", shortFloat(s.exposure)}};
+    j["integrator"] = {{"kind", toString(s.integrator)},
+                       {"max_bounces", s.maxBounces},
+                       {"sampler", toString(s.sampler)}};
+    j["emission"] = {{"scale", shortFloat(s.emissionScale)}};
     return j;
 }
 
@@ -89,7 +94,8 @@ public:
                 ok = section(key, value,
                              {{"position", vec3(&work_.light.position)},
                               {"color", vec3(&work_.light.color)},
-                              {"intensity", number(&work_.light.intensity)}});
+                              {"intensity", number(&work_.light.intensity)},
+                              {"radius", number(&work_.light.radius)}});
             } else if (key == "indirect") {
                 ok = section(key, value,
                              {{"enabled", boolean(&work_.indirect)},
@@ -110,6 +116,13 @@ public:
                 ok = section(
                     key, value,
                     {{"mode", displayMode(&work_.display)}, {"exposure", number(&work_.exposure)}});
+            } else if (key == "integrator") {
+                ok = section(key, value,
+                             {{"kind", integrator(&work_.integrator)},
+                              {"max_bounces", integer(&work_.maxBounces)},
+                              {"sampler", samplerKind(&work_.sampler)}});
+            } else if (key == "emission") {
+                ok = section(key, value, {{"scale", number(&work_.emissionScale)}});
             } else if (key == "scene") {
                 if (!value.is_string() || value.get<std::string>().empty()) {
                     return fail(key, "must be a non-empty string, got " + shown(value));
@@ -200,6 +213,24 @@ private:
         return [field](const Json& value) -> std::string {
             if (!value.is_string() || !parseDisplayMode(value.get<std::string>(), *field)) {
                 return "must be \"lab\" or \"srgb\", got " + shown(value);
+            }
+            return {};
+        };
+    }
+
+    static Setter integrator(Integrator* field) {
+        return [field](const Json& value) -> std::string {
+            if (!value.is_string() || !parseIntegrator(value.get<std::string>(), *field)) {
+                return "must be \"lab\" or \"path\", got " + shown(value);
+            }
+            return {};
+        };
+    }
+
+    static Setter samplerKind(SamplerKind* field) {
+        return [field](const Json& value) -> std::string {
+            if (!value.is_string() || !parseSamplerKind(value.get<std::string>().c_str(), *field)) {
+                return "must be \"sobol\" or \"independent\", got " + shown(value);
             }
             return {};
         };
