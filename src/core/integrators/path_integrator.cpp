@@ -22,11 +22,31 @@ float powerHeuristic(float pdf, float other) {
 
 float maxComponent(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
+// The weight of next-event estimation's sample (density lightPdf) and of a bounce's hit (density
+// bouncePdf) of the same emitter under `strategy`.
+float lightWeight(EmitterStrategy strategy, float lightPdf, float bouncePdf) {
+    switch (strategy) {
+    case EmitterStrategy::Mis: return powerHeuristic(lightPdf, bouncePdf);
+    case EmitterStrategy::LightSamplingOnly: return 1.0f;
+    case EmitterStrategy::BounceOnly: return 0.0f;
+    }
+    return 0.0f;
+}
+float bounceWeight(EmitterStrategy strategy, float bouncePdf, float lightPdf) {
+    switch (strategy) {
+    case EmitterStrategy::Mis: return powerHeuristic(bouncePdf, lightPdf);
+    case EmitterStrategy::LightSamplingOnly: return 0.0f;
+    case EmitterStrategy::BounceOnly: return 1.0f;
+    }
+    return 0.0f;
+}
+
 // D at surface s: the lab's light (sampled when it has a radius) and, by next-event estimation,
 // the emitting triangles, weighted against the bounce's chance of hitting them.
 glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                    const RenderSettings& settings, const SurfacePoint& s,
-                   const PixelSampler& sampler, uint32_t firstPair, RayCounts& counts) {
+                   const PixelSampler& sampler, uint32_t firstPair, EmitterStrategy strategy,
+                   RayCounts& counts) {
     glm::vec3 direct(0.0f);
     if (settings.light.intensity > 0.0f) {
         const LightSample light =
@@ -40,7 +60,7 @@ glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitt
             direct += light.direct;
         }
     }
-    if (!emitters.empty()) {
+    if (!emitters.empty() && strategy != EmitterStrategy::BounceOnly) {
         const glm::vec2 pick = sampler.get2D(firstPair);
         const EmitterSample e = sampleEmitter(scene, emitters, settings.emissionScale, s.point,
                                               pick.x, sampler.get2D(firstPair + 1));
@@ -54,7 +74,7 @@ glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitt
             }
             if (visible) {
                 const float bouncePdf = cosine / kPi;
-                direct += e.radiance * (cosine * powerHeuristic(e.pdf, bouncePdf) / e.pdf);
+                direct += e.radiance * (cosine * lightWeight(strategy, e.pdf, bouncePdf) / e.pdf);
             }
         }
     }
@@ -65,7 +85,7 @@ glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitt
 
 PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                      const RenderSettings& settings, const Ray& cameraRay,
-                     const PixelSampler& sampler, RayCounts& counts) {
+                     const PixelSampler& sampler, RayCounts& counts, EmitterStrategy strategy) {
     PathSample result;
     ++counts.primary;
     Hit hit = closestHit(bvh, cameraRay);
@@ -78,7 +98,7 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
     const glm::vec3 emitted =
         kPi * emittedRadiance(scene, hit.triangle, cameraRay.direction, settings.emissionScale);
     const glm::vec3 firstDirect =
-        directAt(scene, bvh, emitters, settings, first, sampler, kPathFirstPair, counts);
+        directAt(scene, bvh, emitters, settings, first, sampler, kPathFirstPair, strategy, counts);
 
     // N at the first surface. Its one-sample estimate with a cosine-weighted direction w is
     // R(y) at the surface y seen along w: (1/pi) R(y) cos / pdf(w) with pdf = cos / pi. Each later
@@ -113,13 +133,14 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
         if (le != glm::vec3(0.0f)) {
             const float bouncePdf = cosine / kPi;
             const float lightPdf = emitterPdf(scene, emitters, hit.triangle, direction, hit.t);
-            indirect += weight * (kPi * le * powerHeuristic(bouncePdf, lightPdf));
+            indirect += weight * (kPi * le * bounceWeight(strategy, bouncePdf, lightPdf));
         }
         s = surfaceAt(scene, ray, hit);
         const uint32_t nextPairs =
             kPathFirstPair + kPathPairsPerVertex * static_cast<uint32_t>(bounce);
-        indirect += weight * s.rho *
-                    directAt(scene, bvh, emitters, settings, s, sampler, nextPairs, counts);
+        indirect +=
+            weight * s.rho *
+            directAt(scene, bvh, emitters, settings, s, sampler, nextPairs, strategy, counts);
         weight *= s.rho;
     }
     result.indirect = indirect;

@@ -33,11 +33,16 @@ struct PathSample {
 inline constexpr uint32_t kPathFirstPair = 1;
 inline constexpr uint32_t kPathPairsPerVertex = 4;
 
+// How emitting triangles reach D: both ways weighted by MIS (renders), or one way alone with
+// weight 1 (tests check that the three agree, and that MIS has the lowest variance).
+enum class EmitterStrategy { Mis, LightSamplingOnly, BounceOnly };
+
 // One sample of R along cameraRay. `emitters` is buildEmitterTable(scene) (empty for a scene with
 // none). Counts the camera ray as primary, shadow rays as shadow and bounce rays as bounce.
 // Deterministic in (sampler, arguments).
 PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                      const RenderSettings& settings, const Ray& cameraRay,
-                     const PixelSampler& sampler, RayCounts& counts);
+                     const PixelSampler& sampler, RayCounts& counts,
+                     EmitterStrategy strategy = EmitterStrategy::Mis);
 
 } // namespace raylab
