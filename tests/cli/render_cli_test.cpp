@@ -3,6 +3,7 @@
 
 #include "core/bvh.h"
 #include "core/cornell_box.h"
+#include "core/render/image_error.h"
 #include "core/render/renderer.h"
 #include "io/image_io.h"
 #include "temp_dir_test.h"
@@ -16,6 +17,7 @@
 #include <iterator>
 #include <random>
 #include <spawn.h>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -273,6 +275,126 @@ TEST_F(RenderCli, SharedAssetRenders) {
     std::string error;
     ASSERT_TRUE(readExr(path("b.exr"), image, error)) << error;
     EXPECT_GT(image.at(32, 32).x, 0.0f); // the bunny fills the middle
+}
+
+TEST_F(RenderCli, LightTransportFlagsRefuseNonsense) {
+    const std::string out = path("out.png");
+    expectFailure({"--light-radius", "-1", "-o", out}, 2, "--light-radius");
+    expectFailure({"--light-radius", "nan", "-o", out}, 2, "--light-radius");
+    expectFailure({"--light-radius", "inf", "-o", out}, 2, "--light-radius");
+    expectFailure({"--max-bounces", "-1", "-o", out}, 2, "--max-bounces");
+    expectFailure({"--max-bounces", "1025", "-o", out}, 2, "--max-bounces");
+    expectFailure({"--integrator", "whitted", "-o", out}, 2, "--integrator");
+    expectFailure({"--emission-scale", "-0.5", "-o", out}, 2, "--emission-scale");
+    expectFailure({"--sampler", "halton", "-o", out}, 2, "--sampler");
+    std::ofstream(path("bad.json")) << R"({"integrator": {"max_bounces": 5000}})";
+    expectFailure({"--settings", path("bad.json"), "-o", out}, 1, "integrator.max_bounces",
+                  {"bad.json"});
+    std::ofstream(path("bad.json")) << R"({"light": {"radius": -2}})";
+    expectFailure({"--settings", path("bad.json"), "-o", out}, 1, "light.radius", {"bad.json"});
+}
+
+TEST_F(RenderCli, ABadReferenceFailsBeforeRendering) {
+    const std::string out = path("out.png");
+    expectFailure({"--reference", path("missing.pfm"), "-o", out}, 1, "missing.pfm");
+    std::ofstream(path("ref.png")) << "not an image";
+    expectFailure({"--reference", path("ref.png"), "-o", out}, 1, "ref.png", {"ref.png"});
+    fs::remove(path("ref.png"));
+    ASSERT_EQ(run({"--width", "8", "--height", "8", "-o", path("small.pfm")}).exitCode, 0);
+    expectFailure({"--reference", path("small.pfm"), "--width", "9", "--height", "8", "-o", out}, 1,
+                  "8x8", {"small.pfm"});
+    std::ofstream(path("cut.pfm"), std::ios::binary) << "PF\n8 8\n-1\n0123";
+    expectFailure({"--reference", path("cut.pfm"), "-o", out}, 1, "cut.pfm",
+                  {"cut.pfm", "small.pfm"});
+}
+
+TEST_F(RenderCli, ReferencePrintsTheErrorAtEachPowerOfTwo) {
+    const std::vector<std::string> scene = {"--integrator", "path", "--width",   "24",
+                                            "--height",     "24",   "--threads", "2"};
+    std::vector<std::string> args = scene;
+    args.insert(args.end(), {"--spp", "256", "-o", path("ref.pfm")});
+    ASSERT_EQ(run(args).exitCode, 0);
+    args = scene;
+    args.insert(args.end(), {"--spp", "16", "--reference", path("ref.pfm"), "-o", path("out.pfm")});
+    const Outcome r = run(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::vector<double> errors;
+    std::string line;
+    int expectedSpp = 1;
+    while (std::getline(lines, line)) {
+        int spp = 0;
+        double error = 0.0;
+        double seconds = -1.0;
+        ASSERT_EQ(
+            std::sscanf(line.c_str(), "%d spp  relative RMSE %lf  %lf s", &spp, &error, &seconds),
+            3)
+            << line;
+        EXPECT_EQ(spp, expectedSpp);
+        EXPECT_GE(seconds, 0.0);
+        expectedSpp *= 2;
+        errors.push_back(error);
+    }
+    ASSERT_EQ(errors.size(), 5u); // 1, 2, 4, 8, 16
+    // Monte Carlo: the error shrinks about as 1 / sqrt(spp), so 16 samples have well under half
+    // the error of one.
+    EXPECT_LT(errors.back(), 0.5 * errors.front());
+    EXPECT_GT(errors.back(), 0.0);
+    // The last line is the error of the written picture.
+    Framebuffer image;
+    Framebuffer reference;
+    std::string error;
+    ASSERT_TRUE(readPfm(path("out.pfm"), image, error)) << error;
+    ASSERT_TRUE(readPfm(path("ref.pfm"), reference, error)) << error;
+    EXPECT_NEAR(relativeRmse(image, reference), errors.back(), 1e-5);
+}
+
+// Mean R / G of the pixels x0..x1 of rows y0..y1 of a top-down image.
+double redOverGreen(const Framebuffer& image, int x0, int x1, int y0, int y1) {
+    double red = 0.0;
+    double green = 0.0;
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            red += image.at(x, y).x;
+            green += image.at(x, y).y;
+        }
+    }
+    return red / green;
+}
+
+TEST_F(RenderCli, TheCornellObjLightsItselfAndThePathIntegratorBleedsColour) {
+    const fs::path box = test::asset("cornell/CornellBox-Original.obj");
+    if (box.empty()) {
+        GTEST_SKIP() << "shared assets not found";
+    }
+    // Framed with its light at power 0: the ceiling panel (Ke) is the only light.
+    const std::vector<std::string> common = {box.string(), "--width", "64", "--height",
+                                             "64",         "--spp",   "64"};
+    std::vector<std::string> path = common;
+    path.insert(path.end(), {"--integrator", "path", "-o", this->path("path.pfm")});
+    std::vector<std::string> lab = common;
+    lab.insert(lab.end(), {"--integrator", "lab", "-o", this->path("lab.pfm")});
+    ASSERT_EQ(run(path).exitCode, 0);
+    ASSERT_EQ(run(lab).exitCode, 0);
+    Framebuffer pathImage;
+    Framebuffer labImage;
+    std::string error;
+    ASSERT_TRUE(readPfm(this->path("path.pfm"), pathImage, error)) << error;
+    ASSERT_TRUE(readPfm(this->path("lab.pfm"), labImage, error)) << error;
+    // The ceiling near the red (left) wall is redder than near the green (right) wall with the
+    // path integrator; the lab's constant N lights both halves alike.
+    const double pathLeft = redOverGreen(pathImage, 14, 22, 11, 13);
+    const double pathRight = redOverGreen(pathImage, 42, 50, 11, 13);
+    const double labLeft = redOverGreen(labImage, 14, 22, 11, 13);
+    const double labRight = redOverGreen(labImage, 42, 50, 11, 13);
+    EXPECT_GT(pathLeft, 1.5 * pathRight);
+    EXPECT_NEAR(labLeft / labRight, 1.0, 0.05);
+    // The lab integrator shows the emitter as its emitted colour, pi * Ke = pi * (17, 12, 4).
+    double brightest = 0.0;
+    for (const glm::vec3& p : labImage.pixels) {
+        brightest = std::max(brightest, static_cast<double>(p.x));
+    }
+    EXPECT_GT(brightest, 3.14159 * 17.0);
 }
 
 } // namespace
