@@ -46,6 +46,21 @@ TEST(Sampling, OwenScrambledSobolPrefixesAreStratifiedForEverySeedAndPair) {
     }
 }
 
+TEST(Sampling, TheTabulatedSobolDimensionEqualsTheMatrixLoop) {
+    for (uint32_t i = 0; i < 4096; ++i) {
+        ASSERT_EQ(sobolDimension1(i), sobolDimension1Reference(i)) << i;
+    }
+    uint32_t x = 12345;
+    for (int i = 0; i < 100000; ++i) {
+        x = x * 1664525U + 1013904223U;
+        ASSERT_EQ(sobolDimension1(x), sobolDimension1Reference(x)) << x;
+    }
+    // Its first values: 1/2, 3/4, 1/4 (Sobol's second dimension).
+    EXPECT_EQ(sobolDimension1(1), 0x80000000U);
+    EXPECT_EQ(sobolDimension1(2), 0xc0000000U);
+    EXPECT_EQ(sobolDimension1(3), 0x40000000U);
+}
+
 TEST(Sampling, IndependentPointsAreNotStratified) {
     // The baseline the Sobol points are compared with: white noise misses cells.
     std::vector<glm::vec2> points;

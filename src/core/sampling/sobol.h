@@ -37,7 +37,9 @@ constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
 // The first two dimensions of Sobol's sequence, as 32-bit binary fractions: the van der Corput
 // sequence, and the dimension whose generator matrix is Pascal's triangle mod 2.
 constexpr uint32_t sobolDimension0(uint32_t index) { return reverseBits(index); }
-constexpr uint32_t sobolDimension1(uint32_t index) {
+
+// The reference form of dimension 1: the XOR of the matrix's columns for the index's set bits.
+constexpr uint32_t sobolDimension1Reference(uint32_t index) {
     uint32_t result = 0;
     for (uint32_t v = 1U << 31; index != 0; index >>= 1, v ^= v >> 1) {
         if (index & 1U) {
@@ -45,6 +47,28 @@ constexpr uint32_t sobolDimension1(uint32_t index) {
         }
     }
     return result;
+}
+
+namespace detail {
+// Dimension 1 of every value of each byte of the index (the matrix is linear over XOR), so that
+// a full 32-bit index (scrambled indices are) costs four loads instead of 32 branches.
+struct SobolDimension1Tables {
+    uint32_t byte[4][256];
+    constexpr SobolDimension1Tables() : byte{} {
+        for (uint32_t b = 0; b < 4; ++b) {
+            for (uint32_t v = 0; v < 256; ++v) {
+                byte[b][v] = sobolDimension1Reference(v << (8 * b));
+            }
+        }
+    }
+};
+inline constexpr SobolDimension1Tables kSobolDimension1Tables;
+} // namespace detail
+
+constexpr uint32_t sobolDimension1(uint32_t index) {
+    const auto& t = detail::kSobolDimension1Tables.byte;
+    return t[0][index & 0xffU] ^ t[1][(index >> 8) & 0xffU] ^ t[2][(index >> 16) & 0xffU] ^
+           t[3][index >> 24];
 }
 
 } // namespace raylab
