@@ -115,7 +115,7 @@ int run(int argc, char** argv) {
     if (const std::string why = raylab::finishSettings(scene, cl); !why.empty()) {
         return fail(1, why);
     }
-    const raylab::RenderSettings& settings = cl.settings;
+    raylab::RenderSettings& settings = cl.settings;
 
     const auto buildStart = Clock::now();
     raylab::BvhBuildOptions bvhOptions;
@@ -140,7 +140,9 @@ int run(int argc, char** argv) {
     }
 
     raylab::RayCounts counts;
-    raylab::Film film(settings.width, settings.height, raylab::filmLayersFor(settings));
+    raylab::FilmLayers layers = raylab::filmLayersFor(settings);
+    layers.moments = layers.moments || cl.targetError > 0.0f; // the noise estimate needs them
+    raylab::Film film(settings.width, settings.height, layers);
     const raylab::EmitterTable emitters = raylab::buildEmitterTable(scene);
     double referenceSeconds = 0.0; // time spent measuring errors, left out of the render's time
     {
@@ -164,8 +166,23 @@ int run(int argc, char** argv) {
                 referenceSeconds +=
                     std::chrono::duration<double>(Clock::now() - measureStart).count();
             }
+            // --target-error: stop once the estimated error is below it, checked at powers of
+            // two and every 64 samples (each check reads the whole film).
+            if (cl.targetError > 0.0f && done >= 2 &&
+                ((done & (done - 1)) == 0 || done % 64 == 0)) {
+                const auto measureStart = Clock::now();
+                const raylab::NoiseEstimate noise = film.noise();
+                referenceSeconds +=
+                    std::chrono::duration<double>(Clock::now() - measureStart).count();
+                if (noise.known && noise.relativeError < cl.targetError) {
+                    break;
+                }
+            }
         }
     }
+    // What the picture holds: --target-error may have stopped early, and the saved settings must
+    // reproduce these bytes.
+    settings.samplesPerPixel = static_cast<int>(film.samples());
     const raylab::Framebuffer image = film.mean();
     const double seconds =
         std::chrono::duration<double>(Clock::now() - start).count() - referenceSeconds;
@@ -181,10 +198,19 @@ int run(int argc, char** argv) {
     }
 
     const double rays = static_cast<double>(counts.total());
+    const double pixelSamples =
+        static_cast<double>(film.samples()) * static_cast<double>(film.pixelCount());
+    std::string noiseText;
+    if (const raylab::NoiseEstimate noise = film.noise(); noise.known) {
+        noiseText = ", noise " + std::to_string(100.0 * noise.relativeError).substr(0, 5) + "%";
+    }
     std::fprintf(
-        stderr, "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s -> %s\n",
+        stderr,
+        "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s, "
+        "%.2f Msamples/s%s -> %s\n",
         kProgram, settings.width, settings.height, settings.samplesPerPixel, scene.triangles.size(),
-        buildSeconds, seconds, seconds > 0.0 ? rays / seconds * 1e-6 : 0.0, cl.output.c_str());
+        buildSeconds, seconds, seconds > 0.0 ? rays / seconds * 1e-6 : 0.0,
+        seconds > 0.0 ? pixelSamples / seconds * 1e-6 : 0.0, noiseText.c_str(), cl.output.c_str());
     return 0;
 }
 

@@ -304,6 +304,16 @@ const std::vector<Option>& options() {
              s.out.reference = v;
              return {};
          }},
+        {"--target-error", "E", kRender,
+         "stop before --spp once the estimated relative error is below E, in (0, 1)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float e = 0.0f;
+             if (!parseFloat(v, e) || !(e > 0.0f && e < 1.0f)) {
+                 return expected("a relative error in (0, 1), e.g. 0.01", v);
+             }
+             s.out.targetError = e;
+             return {};
+         }},
         {"--frames", "N", kViewer, "quit after N frames (0 = run until closed)",
          intIn(0, 1 << 30, &CommandLine::frames)},
         {"--frames", "N", kBench, "best of N timed frames (default 5)",

@@ -40,6 +40,7 @@ struct CommandLine {
     std::string output;       // render: -o FILE
     std::string saveSettings; // --save-settings FILE.json
     std::string reference;    // render: --reference FILE.pfm|.exr
+    float targetError = 0.0f; // render: --target-error E, 0 = off
     // viewer
     int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
     std::string screenshot;          // --screenshot FILE: save the last shown frame

@@ -287,6 +287,9 @@ TEST_F(RenderCli, LightTransportFlagsRefuseNonsense) {
     expectFailure({"--integrator", "whitted", "-o", out}, 2, "--integrator");
     expectFailure({"--emission-scale", "-0.5", "-o", out}, 2, "--emission-scale");
     expectFailure({"--sampler", "halton", "-o", out}, 2, "--sampler");
+    expectFailure({"--target-error", "0", "-o", out}, 2, "--target-error");
+    expectFailure({"--target-error", "1", "-o", out}, 2, "--target-error");
+    expectFailure({"--target-error", "nan", "-o", out}, 2, "--target-error");
     std::ofstream(path("bad.json")) << R"({"integrator": {"max_bounces": 5000}})";
     expectFailure({"--settings", path("bad.json"), "-o", out}, 1, "integrator.max_bounces",
                   {"bad.json"});
@@ -395,6 +398,27 @@ TEST_F(RenderCli, TheCornellObjLightsItselfAndThePathIntegratorBleedsColour) {
         brightest = std::max(brightest, static_cast<double>(p.x));
     }
     EXPECT_GT(brightest, 3.14159 * 17.0);
+}
+
+TEST_F(RenderCli, TargetErrorStopsEarlyAndTheSavedSettingsReproduceThePicture) {
+    const Outcome r =
+        run({"--integrator", "path", "--width", "32", "--height", "32", "--spp", "4096",
+             "--target-error", "0.2", "--save-settings", path("s.json"), "-o", path("a.pfm")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    int spp = 0;
+    double noise = 0.0;
+    const std::size_t at = r.err.find(" spp");
+    ASSERT_NE(at, std::string::npos) << r.err;
+    spp = std::stoi(r.err.substr(r.err.rfind(' ', at - 1) + 1));
+    ASSERT_NE(r.err.find("noise "), std::string::npos) << r.err;
+    noise = std::stod(r.err.substr(r.err.find("noise ") + 6));
+    EXPECT_GE(spp, 2);
+    EXPECT_LT(spp, 4096);
+    EXPECT_LT(noise, 20.0); // percent
+    const Outcome again = run({"--settings", path("s.json"), "-o", path("b.pfm")});
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_NE(again.err.find(" " + std::to_string(spp) + " spp"), std::string::npos) << again.err;
+    EXPECT_EQ(slurp(path("a.pfm")), slurp(path("b.pfm")));
 }
 
 } // namespace
