@@ -61,6 +61,24 @@ TEST(Sampling, TheTabulatedSobolDimensionEqualsTheMatrixLoop) {
     EXPECT_EQ(sobolDimension1(3), 0x40000000U);
 }
 
+TEST(Sampling, PixelSamplerIsTheScrambledSobolSequenceAsDefined) {
+    // The sampler's shortcut (reversals that cancel left out) against the definition: the
+    // index scrambled, then each dimension scrambled with its own seed.
+    for (uint32_t pixel : {0u, 99u}) {
+        for (uint32_t i = 0; i < 300; ++i) {
+            for (uint32_t pair : {0u, 7u}) {
+                const uint32_t pixelKey = hash32(pixel ^ hash32(0 + 0x68e31da4U));
+                const uint32_t key = hash32(pixelKey ^ hash32(pair * 0x9e3779b9U + 0x7f4a7c15U));
+                const uint32_t index = owenScramble(i, key);
+                const glm::vec2 expected(
+                    unitFloat(owenScramble(sobolDimension0(index), hash32(key ^ 0xa511e9b3U))),
+                    unitFloat(owenScramble(sobolDimension1(index), hash32(key ^ 0x63d83595U))));
+                ASSERT_EQ(PixelSampler(SamplerKind::Sobol, pixel, i).get2D(pair), expected);
+            }
+        }
+    }
+}
+
 TEST(Sampling, IndependentPointsAreNotStratified) {
     // The baseline the Sobol points are compared with: white noise misses cells.
     std::vector<glm::vec2> points;

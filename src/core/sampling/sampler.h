@@ -30,7 +30,7 @@ public:
     // pixelIndex: y * width + x; seed: 0 for renders (tests vary it to draw independent runs).
     PixelSampler(SamplerKind kind, uint32_t pixelIndex, uint32_t sampleIndex, uint32_t seed = 0)
         : kind_(kind), pixelKey_(hash32(pixelIndex ^ hash32(seed + 0x68e31da4U))),
-          sampleIndex_(sampleIndex) {}
+          sampleIndex_(sampleIndex), reversedIndex_(reverseBits(sampleIndex)) {}
 
     // A point in [0, 1)^2 of dimension pair `pair`.
     glm::vec2 get2D(uint32_t pair) const {
@@ -39,9 +39,14 @@ public:
             const uint32_t a = hash32(key ^ hash32(sampleIndex_ + 0x1b873593U));
             return glm::vec2(toUnit(a), toUnit(hash32(a ^ 0x85ebca6bU)));
         }
-        const uint32_t index = owenScramble(sampleIndex_, key);
-        return glm::vec2(toUnit(owenScramble(sobolDimension0(index), hash32(key ^ 0xa511e9b3U))),
-                         toUnit(owenScramble(sobolDimension1(index), hash32(key ^ 0x63d83595U))));
+        // owenScramble(sobolDimension_d(owenScramble(sampleIndex, key)), seed_d), with the
+        // reversals that cancel left out: the index's scramble leaves it reversed (scrambled),
+        // dimension 0 of an index is its reversal, and dimension 1 is tabulated reversed.
+        const uint32_t index = reverseBits(lowToHighPermutation(reversedIndex_, key));
+        const uint32_t x = reverseBits(lowToHighPermutation(index, hash32(key ^ 0xa511e9b3U)));
+        const uint32_t y = reverseBits(
+            lowToHighPermutation(reversedSobolDimension1(index), hash32(key ^ 0x63d83595U)));
+        return glm::vec2(toUnit(x), toUnit(y));
     }
 
     uint32_t sampleIndex() const { return sampleIndex_; }
@@ -53,6 +58,7 @@ private:
     SamplerKind kind_;
     uint32_t pixelKey_;
     uint32_t sampleIndex_;
+    uint32_t reversedIndex_;
 };
 
 } // namespace raylab

@@ -51,13 +51,16 @@ constexpr uint32_t sobolDimension1Reference(uint32_t index) {
 
 namespace detail {
 // Dimension 1 of every value of each byte of the index (the matrix is linear over XOR), so that
-// a full 32-bit index (scrambled indices are) costs four loads instead of 32 branches.
+// a full 32-bit index (scrambled indices are) costs four loads instead of 32 branches; and the
+// same with the result's bits reversed (scrambling works on reversed bits).
 struct SobolDimension1Tables {
     uint32_t byte[4][256];
-    constexpr SobolDimension1Tables() : byte{} {
+    uint32_t reversedByte[4][256];
+    constexpr SobolDimension1Tables() : byte{}, reversedByte{} {
         for (uint32_t b = 0; b < 4; ++b) {
             for (uint32_t v = 0; v < 256; ++v) {
                 byte[b][v] = sobolDimension1Reference(v << (8 * b));
+                reversedByte[b][v] = reverseBits(byte[b][v]);
             }
         }
     }
@@ -67,6 +70,13 @@ inline constexpr SobolDimension1Tables kSobolDimension1Tables;
 
 constexpr uint32_t sobolDimension1(uint32_t index) {
     const auto& t = detail::kSobolDimension1Tables.byte;
+    return t[0][index & 0xffU] ^ t[1][(index >> 8) & 0xffU] ^ t[2][(index >> 16) & 0xffU] ^
+           t[3][index >> 24];
+}
+
+// reverseBits(sobolDimension1(index)), without reversing.
+constexpr uint32_t reversedSobolDimension1(uint32_t index) {
+    const auto& t = detail::kSobolDimension1Tables.reversedByte;
     return t[0][index & 0xffU] ^ t[1][(index >> 8) & 0xffU] ^ t[2][(index >> 16) & 0xffU] ^
            t[3][index >> 24];
 }
