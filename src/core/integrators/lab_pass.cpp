@@ -2,7 +2,7 @@
 
 #include "bvh_packet.h"
 #include "camera.h"
-#include "render/parallel_tiles.h"
+#include "render/pass_tiles.h"
 #include "sampling/hash.h"
 #include "watertight_avx2.h"
 
@@ -123,87 +123,57 @@ bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
     const std::span<glm::vec3> sums = film.sums();
     const std::span<glm::vec3> squares = film.squares();
     const PrimaryRays rays(settings.camera, width, settings.height);
-    std::atomic<uint64_t> primary{0};
-    std::atomic<uint64_t> shadow{0};
     const uint32_t sampleSeed = hash32(sampleIndex);
     static const bool simd = bvhSimdSupported();
-    // Film::scale() once this sample is counted: sum * (1 / n).
-    const float displayScale = 1.0f / static_cast<float>(sampleIndex + 1);
-    assert(options.displayRgba.empty() ||
-           options.displayRgba.size() >= 4 * static_cast<std::size_t>(width) * settings.height);
 
-    TileLoopOptions loop;
-    loop.threads = settings.threads;
-    loop.cancel = options.cancel;
-    if (options.progress) {
-        loop.progress = [&](std::size_t done, std::size_t total) {
-            options.progress(static_cast<double>(done) / static_cast<double>(total));
-        };
-    }
-    const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
-        RayCounts tileCounts;
-        // Blocks of up to 8 x 8 pixels: each row of a block is one packet (shadeLabBlock).
-        RayPacket packets[kPacketSize];
-        RadiancePacket radiance[kPacketSize];
-        uint32_t rowSeeds[kPacketSize];
-        float px[kPacketSize];
-        float py[kPacketSize];
-        for (int y0 = tile.y0; y0 < tile.y1; y0 += kPacketSize) {
-            const int rows = std::min(kPacketSize, tile.y1 - y0);
-            for (int r = 0; r < rows; ++r) {
-                // samplePixelOffset's hash with its row and sample parts hoisted out of the pixels.
-                rowSeeds[r] = hash32(static_cast<uint32_t>(y0 + r) ^ sampleSeed);
-            }
-            for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketSize) {
-                const int count = std::min(kPacketSize, tile.x1 - x0);
+    return forEachPassTile(
+        settings, film, counts, options, [&](const TileRect& tile, RayCounts& tileCounts) {
+            // Blocks of up to 8 x 8 pixels: each row of a block is one packet (shadeLabBlock).
+            RayPacket packets[kPacketSize];
+            RadiancePacket radiance[kPacketSize];
+            uint32_t rowSeeds[kPacketSize];
+            float px[kPacketSize];
+            float py[kPacketSize];
+            for (int y0 = tile.y0; y0 < tile.y1; y0 += kPacketSize) {
+                const int rows = std::min(kPacketSize, tile.y1 - y0);
                 for (int r = 0; r < rows; ++r) {
-                    if (simd && count == kPacketSize) {
-                        samplePoints8(x0, y0 + r, sampleIndex, rowSeeds[r], px, py);
-                    } else {
-                        samplePoints(x0, y0 + r, count, sampleIndex, rowSeeds[r], px, py);
-                    }
-                    rays.through8(px, py, count, packets[r]);
+                    // samplePixelOffset's hash with its row and sample parts hoisted out of the
+                    // pixels.
+                    rowSeeds[r] = hash32(static_cast<uint32_t>(y0 + r) ^ sampleSeed);
                 }
-                // Sample 0 is at the pixel centres; later samples anywhere in the pixels.
-                const float inset = sampleIndex == 0 ? 0.5f : 0.0f;
-                const ImageRect rect{static_cast<float>(x0) + inset, static_cast<float>(y0) + inset,
-                                     static_cast<float>(x0 + count) - inset,
-                                     static_cast<float>(y0 + rows) - inset};
-                shadeLabBlock(scene, bvh, settings, rays, rect, packets, rows, radiance,
-                              tileCounts);
-                for (int r = 0; r < rows; ++r) {
-                    const std::size_t first = static_cast<std::size_t>(y0 + r) * width + x0;
-                    if (simd && count == kPacketSize) {
-                        storeOrAdd8(radiance[r], sampleIndex == 0, &sums[first]);
-                    } else {
-                        storeOrAdd(radiance[r], count, sampleIndex == 0, &sums[first]);
+                for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketSize) {
+                    const int count = std::min(kPacketSize, tile.x1 - x0);
+                    for (int r = 0; r < rows; ++r) {
+                        if (simd && count == kPacketSize) {
+                            samplePoints8(x0, y0 + r, sampleIndex, rowSeeds[r], px, py);
+                        } else {
+                            samplePoints(x0, y0 + r, count, sampleIndex, rowSeeds[r], px, py);
+                        }
+                        rays.through8(px, py, count, packets[r]);
                     }
-                    if (!squares.empty()) {
-                        storeOrAddSquares(radiance[r], count, sampleIndex == 0, &squares[first]);
+                    // Sample 0 is at the pixel centres; later samples anywhere in the pixels.
+                    const float inset = sampleIndex == 0 ? 0.5f : 0.0f;
+                    const ImageRect rect{static_cast<float>(x0) + inset,
+                                         static_cast<float>(y0) + inset,
+                                         static_cast<float>(x0 + count) - inset,
+                                         static_cast<float>(y0 + rows) - inset};
+                    shadeLabBlock(scene, bvh, settings, rays, rect, packets, rows, radiance,
+                                  tileCounts);
+                    for (int r = 0; r < rows; ++r) {
+                        const std::size_t first = static_cast<std::size_t>(y0 + r) * width + x0;
+                        if (simd && count == kPacketSize) {
+                            storeOrAdd8(radiance[r], sampleIndex == 0, &sums[first]);
+                        } else {
+                            storeOrAdd(radiance[r], count, sampleIndex == 0, &sums[first]);
+                        }
+                        if (!squares.empty()) {
+                            storeOrAddSquares(radiance[r], count, sampleIndex == 0,
+                                              &squares[first]);
+                        }
                     }
                 }
             }
-        }
-        if (!options.displayRgba.empty()) {
-            for (int y = tile.y0; y < tile.y1; ++y) {
-                const std::size_t first = static_cast<std::size_t>(y) * width + tile.x0;
-                const std::size_t count = static_cast<std::size_t>(tile.x1 - tile.x0);
-                toRgba8(std::span<const glm::vec3>(sums).subspan(first, count), displayScale,
-                        settings.display, settings.exposure,
-                        options.displayRgba.subspan(4 * first, 4 * count), options.displayOrder);
-            }
-        }
-        primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);
-        shadow.fetch_add(tileCounts.shadow, std::memory_order_relaxed);
-    });
-    if (counts) {
-        counts->primary += primary.load();
-        counts->shadow += shadow.load();
-    }
-    if (complete) {
-        film.passFinished();
-    }
-    return complete;
+        });
 }
 
 } // namespace raylab

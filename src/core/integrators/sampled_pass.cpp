@@ -3,7 +3,7 @@
 #include "camera.h"
 #include "integrators/path_integrator.h"
 #include "lights/sphere_light.h"
-#include "render/parallel_tiles.h"
+#include "render/pass_tiles.h"
 #include "sampling/hash.h"
 #include "sampling/warp.h"
 
@@ -45,76 +45,39 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
     const std::span<glm::vec4> indirect = film.indirect();
     const PrimaryRays rays(settings.camera, width, settings.height);
     const bool path = settings.integrator == Integrator::Path;
-    // Film::scale() once this sample is counted: sum * (1 / n).
-    const float displayScale = 1.0f / static_cast<float>(sampleIndex + 1);
-    assert(options.displayRgba.empty() ||
-           options.displayRgba.size() >= 4 * static_cast<std::size_t>(width) * settings.height);
-    std::atomic<uint64_t> primary{0};
-    std::atomic<uint64_t> shadow{0};
-    std::atomic<uint64_t> bounce{0};
-
-    TileLoopOptions loop;
-    loop.threads = settings.threads;
-    loop.cancel = options.cancel;
-    if (options.progress) {
-        loop.progress = [&](std::size_t done, std::size_t total) {
-            options.progress(static_cast<double>(done) / static_cast<double>(total));
-        };
-    }
-    const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
-        RayCounts tileCounts;
-        for (int y = tile.y0; y < tile.y1; ++y) {
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
-                const PixelSampler sampler(settings.sampler, static_cast<uint32_t>(pixel),
-                                           sampleIndex);
-                glm::vec3 value;
-                if (path) {
-                    const glm::vec2 offset = sampler.get2D(0);
-                    const Ray ray = rays.through(static_cast<float>(x) + offset.x,
-                                                 static_cast<float>(y) + offset.y);
-                    const PathSample sample =
-                        tracePath(scene, bvh, emitters, settings, ray, sampler, tileCounts);
-                    value = sample.radiance;
-                    if (!indirect.empty()) {
-                        const glm::vec4 n(sample.indirect, sample.hit ? 1.0f : 0.0f);
-                        indirect[pixel] = first ? n : indirect[pixel] + n;
-                    }
-                } else {
-                    const PixelOffset offset = samplePixelOffset(
-                        static_cast<uint32_t>(x), static_cast<uint32_t>(y), sampleIndex);
-                    const Ray ray = rays.through(static_cast<float>(x) + offset.dx,
-                                                 static_cast<float>(y) + offset.dy);
-                    value = shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts);
-                }
-                sums[pixel] = first ? value : sums[pixel] + value;
-                if (!squares.empty()) {
-                    squares[pixel] = first ? value * value : squares[pixel] + value * value;
-                }
-            }
-        }
-        if (!options.displayRgba.empty()) {
+    return forEachPassTile(
+        settings, film, counts, options, [&](const TileRect& tile, RayCounts& tileCounts) {
             for (int y = tile.y0; y < tile.y1; ++y) {
-                const std::size_t begin = static_cast<std::size_t>(y) * width + tile.x0;
-                const std::size_t count = static_cast<std::size_t>(tile.x1 - tile.x0);
-                toRgba8(std::span<const glm::vec3>(sums).subspan(begin, count), displayScale,
-                        settings.display, settings.exposure,
-                        options.displayRgba.subspan(4 * begin, 4 * count), options.displayOrder);
+                for (int x = tile.x0; x < tile.x1; ++x) {
+                    const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+                    const PixelSampler sampler(settings.sampler, static_cast<uint32_t>(pixel),
+                                               sampleIndex);
+                    glm::vec3 value;
+                    if (path) {
+                        const glm::vec2 offset = sampler.get2D(0);
+                        const Ray ray = rays.through(static_cast<float>(x) + offset.x,
+                                                     static_cast<float>(y) + offset.y);
+                        const PathSample sample =
+                            tracePath(scene, bvh, emitters, settings, ray, sampler, tileCounts);
+                        value = sample.radiance;
+                        if (!indirect.empty()) {
+                            const glm::vec4 n(sample.indirect, sample.hit ? 1.0f : 0.0f);
+                            indirect[pixel] = first ? n : indirect[pixel] + n;
+                        }
+                    } else {
+                        const PixelOffset offset = samplePixelOffset(
+                            static_cast<uint32_t>(x), static_cast<uint32_t>(y), sampleIndex);
+                        const Ray ray = rays.through(static_cast<float>(x) + offset.dx,
+                                                     static_cast<float>(y) + offset.dy);
+                        value = shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts);
+                    }
+                    sums[pixel] = first ? value : sums[pixel] + value;
+                    if (!squares.empty()) {
+                        squares[pixel] = first ? value * value : squares[pixel] + value * value;
+                    }
+                }
             }
-        }
-        primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);
-        shadow.fetch_add(tileCounts.shadow, std::memory_order_relaxed);
-        bounce.fetch_add(tileCounts.bounce, std::memory_order_relaxed);
-    });
-    if (counts) {
-        counts->primary += primary.load();
-        counts->shadow += shadow.load();
-        counts->bounce += bounce.load();
-    }
-    if (complete) {
-        film.passFinished();
-    }
-    return complete;
+        });
 }
 
 } // namespace raylab
