@@ -3,6 +3,7 @@
 // error is one line on stderr and leaves no output file behind.
 
 #include "core/bvh.h"
+#include "core/integrators/pixel_inspection.h"
 #include "core/lights/emitters.h"
 #include "core/render/film.h"
 #include "core/render/image_error.h"
@@ -10,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "io/command_line.h"
 #include "io/image_io.h"
+#include "io/inspection_json.h"
 #include "io/mesh_loader.h"
 #include "io/settings_json.h"
 #include "io/text_util.h"
@@ -97,7 +99,7 @@ int run(int argc, char** argv) {
         return 0;
     }
     // Bad output paths fail now, not after the render.
-    if (!raylab::checkWritable(cl.output, error)) {
+    if (!cl.output.empty() && !raylab::checkWritable(cl.output, error)) {
         return fail(1, error);
     }
     if (!cl.saveSettings.empty() && !raylab::checkWritable(cl.saveSettings, error)) {
@@ -124,6 +126,17 @@ int run(int argc, char** argv) {
     const auto start = Clock::now();
     const double buildSeconds = std::chrono::duration<double>(start - buildStart).count();
 
+    const raylab::EmitterTable emitters = raylab::buildEmitterTable(scene);
+    if (cl.inspect) {
+        const raylab::PixelInspection inspection =
+            raylab::inspectPixel(scene, bvh, emitters, settings, cl.inspectX, cl.inspectY);
+        std::printf("%s\n", raylab::inspectionToJson(inspection).c_str());
+        std::fflush(stdout);
+        if (cl.output.empty()) {
+            return 0;
+        }
+    }
+
     // --reference: the converged picture the samples' error is measured against, read first so
     // that a bad file fails before the render.
     raylab::Framebuffer reference;
@@ -143,7 +156,6 @@ int run(int argc, char** argv) {
     raylab::FilmLayers layers = raylab::filmLayersFor(settings);
     layers.moments = layers.moments || cl.targetError > 0.0f; // the noise estimate needs them
     raylab::Film film(settings.width, settings.height, layers);
-    const raylab::EmitterTable emitters = raylab::buildEmitterTable(scene);
     double referenceSeconds = 0.0; // time spent measuring errors, left out of the render's time
     {
         ProgressLine progress; // erased at the end of this block

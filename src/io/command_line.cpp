@@ -314,6 +314,21 @@ const std::vector<Option>& options() {
              s.out.targetError = e;
              return {};
          }},
+        {"--inspect", "X,Y", kRender,
+         "print the lab's equation for pixel X,Y with its numbers, as JSON (-o optional)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             const std::size_t comma = v.find(',');
+             int x = -1;
+             int y = -1;
+             if (comma == std::string::npos || !parseInt(v.substr(0, comma), x) ||
+                 !parseInt(v.substr(comma + 1), y) || x < 0 || y < 0) {
+                 return expected("a pixel x,y of two integers >= 0", v);
+             }
+             s.out.inspect = true;
+             s.out.inspectX = x;
+             s.out.inspectY = y;
+             return {};
+         }},
         {"--frames", "N", kViewer, "quit after N frames (0 = run until closed)",
          intIn(0, 1 << 30, &CommandLine::frames)},
         {"--frames", "N", kBench, "best of N timed frames (default 5)",
@@ -498,8 +513,16 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         }
         result.settings.camera.verticalFovDegrees = fov;
     }
-    if (program == Program::Render && result.output.empty()) {
+    if (program == Program::Render && result.output.empty() && !result.inspect) {
         error = "missing output file (-o FILE; see --help)";
+        return 2;
+    }
+    if (result.inspect &&
+        (result.inspectX >= result.settings.width || result.inspectY >= result.settings.height)) {
+        error = "--inspect: pixel " + std::to_string(result.inspectX) + "," +
+                std::to_string(result.inspectY) + " is outside the " +
+                std::to_string(result.settings.width) + "x" +
+                std::to_string(result.settings.height) + " image";
         return 2;
     }
     if (std::string why = validate(result.settings); !why.empty()) {

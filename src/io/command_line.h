@@ -41,6 +41,9 @@ struct CommandLine {
     std::string saveSettings; // --save-settings FILE.json
     std::string reference;    // render: --reference FILE.pfm|.exr
     float targetError = 0.0f; // render: --target-error E, 0 = off
+    bool inspect = false;     // render: --inspect X,Y (then -o is optional)
+    int inspectX = 0;
+    int inspectY = 0;
     // viewer
     int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
     std::string screenshot;          // --screenshot FILE: save the last shown frame

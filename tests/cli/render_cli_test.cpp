@@ -3,6 +3,7 @@
 
 #include "core/bvh.h"
 #include "core/cornell_box.h"
+#include "core/integrators/pixel_inspection.h"
 #include "core/render/image_error.h"
 #include "core/render/renderer.h"
 #include "io/image_io.h"
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <spawn.h>
 #include <sstream>
@@ -421,6 +423,53 @@ TEST_F(RenderCli, TargetErrorStopsEarlyAndTheSavedSettingsReproduceThePicture) {
     const std::string sppText = std::to_string(spp) + " spp";
     EXPECT_NE(again.err.find(sppText), std::string::npos) << again.err;
     EXPECT_EQ(slurp(path("a.pfm")), slurp(path("b.pfm")));
+}
+
+TEST_F(RenderCli, InspectPrintsThePixelsEquationAsJson) {
+    const Outcome r = run({"--inspect", "250,150"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{}); // no -o: no image
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    const PixelInspection p = inspectPixel(scene, bvh, EmitterTable(), RenderSettings(), 250, 150);
+    EXPECT_EQ(j["pixel"], nlohmann::json::array({250, 150}));
+    EXPECT_EQ(j["hit"], true);
+    EXPECT_EQ(j["triangle"], p.triangle);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_FLOAT_EQ(j["point"][c].get<float>(), p.point[c]);
+        EXPECT_FLOAT_EQ(j["rho"][c].get<float>(), p.rho[c]);
+        EXPECT_FLOAT_EQ(j["normal"][c].get<float>(), p.normal[c]);
+        EXPECT_FLOAT_EQ(j["to_light"][c].get<float>(), p.toLight[c]);
+        EXPECT_FLOAT_EQ(j["D"][c].get<float>(), p.direct[c]);
+        EXPECT_FLOAT_EQ(j["N"][c].get<float>(), p.indirect[c]);
+        EXPECT_FLOAT_EQ(j["R"][c].get<float>(), p.radiance[c]);
+        EXPECT_EQ(j["display"][c].get<int>(), p.display[static_cast<std::size_t>(c)]);
+    }
+    EXPECT_FLOAT_EQ(j["distance"].get<float>(), p.distance);
+    EXPECT_FLOAT_EQ(j["cos_theta"].get<float>(), p.cosTheta);
+    EXPECT_EQ(j["shadowed"], false);
+    EXPECT_TRUE(j["blocker"].is_null());
+
+    // With epsilon 0 a block top shows acne: some pixel is blocked by its own triangle.
+    const Outcome acne = run({"--inspect", "380,350", "--shadow-eps", "0", "-o", path("a.png")});
+    ASSERT_EQ(acne.exitCode, 0) << acne.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"a.png"}); // -o still renders
+    const nlohmann::json a = nlohmann::json::parse(acne.out);
+    EXPECT_EQ(a["epsilon"], 0.0);
+    EXPECT_TRUE(a.contains("blocker"));
+
+    // A miss says so and nothing else.
+    const Outcome miss = run({"--inspect", "250,250", "--yaw", "180"});
+    ASSERT_EQ(miss.exitCode, 0) << miss.err;
+    EXPECT_EQ(miss.out, "{\"pixel\":[250,250],\"hit\":false}\n");
+}
+
+TEST_F(RenderCli, InspectRefusesPixelsOutsideTheImage) {
+    expectFailure({"--inspect", "500,0"}, 2, "outside the 500x500 image");
+    expectFailure({"--inspect", "3,-1"}, 2, "--inspect");
+    expectFailure({"--inspect", "3"}, 2, "--inspect");
+    expectFailure({"--inspect", "10,10", "--width", "8"}, 2, "outside the 8x500 image");
 }
 
 } // namespace

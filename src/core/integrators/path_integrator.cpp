@@ -85,7 +85,8 @@ glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitt
 
 PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                      const RenderSettings& settings, const Ray& cameraRay,
-                     const PixelSampler& sampler, RayCounts& counts, EmitterStrategy strategy) {
+                     const PixelSampler& sampler, RayCounts& counts, EmitterStrategy strategy,
+                     std::vector<PathVertexRecord>* record) {
     PathSample result;
     ++counts.primary;
     Hit hit = closestHit(bvh, cameraRay);
@@ -99,6 +100,9 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
         kPi * emittedRadiance(scene, hit.triangle, cameraRay.direction, settings.emissionScale);
     const glm::vec3 firstDirect =
         directAt(scene, bvh, emitters, settings, first, sampler, kPathFirstPair, strategy, counts);
+    if (record) {
+        record->push_back({first.point, first.rho, firstDirect, emitted + first.rho * firstDirect});
+    }
 
     // N at the first surface. Its one-sample estimate with a cosine-weighted direction w is
     // R(y) at the surface y seen along w: (1/pi) R(y) cos / pdf(w) with pdf = cos / pi. Each later
@@ -130,17 +134,22 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
         }
         const glm::vec3 le =
             emittedRadiance(scene, hit.triangle, direction, settings.emissionScale);
+        glm::vec3 found(0.0f); // this surface's terms of N at the first surface
         if (le != glm::vec3(0.0f)) {
             const float bouncePdf = cosine / kPi;
             const float lightPdf = emitterPdf(scene, emitters, hit.triangle, direction, hit.t);
-            indirect += weight * (kPi * le * bounceWeight(strategy, bouncePdf, lightPdf));
+            found += weight * (kPi * le * bounceWeight(strategy, bouncePdf, lightPdf));
         }
         s = surfaceAt(scene, ray, hit);
         const uint32_t nextPairs =
             kPathFirstPair + kPathPairsPerVertex * static_cast<uint32_t>(bounce);
-        indirect +=
-            weight * s.rho *
+        const glm::vec3 direct =
             directAt(scene, bvh, emitters, settings, s, sampler, nextPairs, strategy, counts);
+        found += weight * s.rho * direct;
+        indirect += found;
+        if (record) {
+            record->push_back({s.point, s.rho, direct, first.rho * found});
+        }
         weight *= s.rho;
     }
     result.indirect = indirect;

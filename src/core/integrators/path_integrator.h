@@ -18,6 +18,7 @@
 #include "scene.h"
 
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace raylab {
 
@@ -33,6 +34,15 @@ struct PathSample {
 inline constexpr uint32_t kPathFirstPair = 1;
 inline constexpr uint32_t kPathPairsPerVertex = 4;
 
+// One surface of a traced path, as the pixel inspector lists it.
+struct PathVertexRecord {
+    glm::vec3 point{0.0f};
+    glm::vec3 rho{0.0f};
+    glm::vec3 direct{0.0f}; // D at the point (this sample's estimate, shadows applied)
+    glm::vec3 adds{0.0f};   // what this surface adds to the pixel's R (its E and rho * D, times
+                            // the reflectances between it and the camera)
+};
+
 // How emitting triangles reach D: both ways weighted by MIS (renders), or one way alone with
 // weight 1 (tests check that the three agree, and that MIS has the lowest variance).
 enum class EmitterStrategy { Mis, LightSamplingOnly, BounceOnly };
@@ -43,6 +53,7 @@ enum class EmitterStrategy { Mis, LightSamplingOnly, BounceOnly };
 PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                      const RenderSettings& settings, const Ray& cameraRay,
                      const PixelSampler& sampler, RayCounts& counts,
-                     EmitterStrategy strategy = EmitterStrategy::Mis);
+                     EmitterStrategy strategy = EmitterStrategy::Mis,
+                     std::vector<PathVertexRecord>* record = nullptr);
 
 } // namespace raylab
