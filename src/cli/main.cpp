@@ -212,17 +212,21 @@ int run(int argc, char** argv) {
     const double rays = static_cast<double>(counts.total());
     const double pixelSamples =
         static_cast<double>(film.samples()) * static_cast<double>(film.pixelCount());
+    const std::string presetText = cl.preset ? ", preset " + std::string(cl.preset->name) + " (" +
+                                                   std::string(cl.preset->equation) + ")"
+                                             : std::string();
     std::string noiseText;
     if (const raylab::NoiseEstimate noise = film.noise(); noise.known) {
         noiseText = ", noise " + std::to_string(100.0 * noise.relativeError).substr(0, 5) + "%";
     }
-    std::fprintf(
-        stderr,
-        "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s, "
-        "%.2f Msamples/s%s -> %s\n",
-        kProgram, settings.width, settings.height, settings.samplesPerPixel, scene.triangles.size(),
-        buildSeconds, seconds, seconds > 0.0 ? rays / seconds * 1e-6 : 0.0,
-        seconds > 0.0 ? pixelSamples / seconds * 1e-6 : 0.0, noiseText.c_str(), cl.output.c_str());
+    std::fprintf(stderr,
+                 "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s, "
+                 "%.2f Msamples/s%s%s -> %s\n",
+                 kProgram, settings.width, settings.height, settings.samplesPerPixel,
+                 scene.triangles.size(), buildSeconds, seconds,
+                 seconds > 0.0 ? rays / seconds * 1e-6 : 0.0,
+                 seconds > 0.0 ? pixelSamples / seconds * 1e-6 : 0.0, noiseText.c_str(),
+                 presetText.c_str(), cl.output.c_str());
     return 0;
 }
 

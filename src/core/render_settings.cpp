@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace raylab {
 
@@ -122,6 +123,37 @@ bool parseIntegrator(const std::string& text, Integrator& integrator) {
     if (text == "path") {
         integrator = Integrator::Path;
         return true;
+    }
+    return false;
+}
+
+} // namespace raylab
+
+namespace raylab {
+
+namespace {
+constexpr std::pair<View, const char*> kViewNames[] = {
+    {View::Beauty, "beauty"},     {View::Albedo, "albedo"},         {View::Direct, "direct"},
+    {View::Indirect, "indirect"}, {View::Visibility, "visibility"}, {View::Normal, "normal"},
+    {View::Depth, "depth"},
+};
+} // namespace
+
+const char* toString(View view) {
+    for (const auto& [v, name] : kViewNames) {
+        if (v == view) {
+            return name;
+        }
+    }
+    return "beauty";
+}
+
+bool parseView(const std::string& text, View& view) {
+    for (const auto& [v, name] : kViewNames) {
+        if (text == name) {
+            view = v;
+            return true;
+        }
     }
     return false;
 }

@@ -21,6 +21,17 @@ enum class Integrator {
     Path, // R = E + rho * (D + N(x)) with N(x) computed by Monte Carlo path tracing
 };
 
+// What the picture shows: the lit picture, or one term of the light model on its own.
+enum class View {
+    Beauty,     // R
+    Albedo,     // rho
+    Direct,     // D, shadows applied, before rho
+    Indirect,   // N: the lab's constant, or the path integrator's estimate
+    Visibility, // the fraction of the light the point sees: 0 in shadow, between in a penumbra
+    Normal,     // the facing normal, n * 0.5 + 0.5
+    Depth,      // t along the camera ray, in world units
+};
+
 // The lab's light. Its power P = color * intensity, in watts per colour channel. With radius 0 it
 // is the lab's point light; with radius r > 0 it is a sphere of radius r centred at position,
 // emitting the same total power uniformly from its surface (soft shadows). The sphere is not
@@ -64,6 +75,7 @@ struct RenderSettings {
     // Multiplies the emission (Le) of every emitting material of the scene; >= 0.
     float emissionScale = 1.0f;
     SamplerKind sampler = SamplerKind::Sobol; // the path integrator's and the sphere light's
+    View view = View::Beauty;
 
     glm::vec3 indirect3() const {
         return indirect ? indirectColor * indirectIntensity : glm::vec3(0.0f);
@@ -91,6 +103,9 @@ const char* toString(DisplayMode mode);
 // Parses "lab" or "srgb"; returns false for anything else.
 bool parseDisplayMode(const std::string& text, DisplayMode& mode);
 const char* toString(Integrator integrator);
+const char* toString(View view);
+// Parses a view's name (beauty, albedo, direct, indirect, visibility, normal, depth).
+bool parseView(const std::string& text, View& view);
 // Parses "lab" or "path"; returns false for anything else.
 bool parseIntegrator(const std::string& text, Integrator& integrator);
 

@@ -6,6 +6,7 @@
 #include "io/command_line.h"
 
 #include "core/camera.h"
+#include "core/lab_presets.h"
 #include "core/scene_framing.h"
 #include "io/image_io.h"
 #include "io/number_parse.h"
@@ -248,6 +249,32 @@ const std::vector<Option>& options() {
                  return expected("a finite number >= 0", v);
              }
              s.out.settings.emissionScale = scale;
+             return {};
+         }},
+        {"--preset", "NAME", kRender | kViewer,
+         "a step of the lab on its box: lab-1-intersection, lab-2-light, lab-3-diffuse, "
+         "lab-4-acne, lab-5-shadows, lab-6-indirect (later flags override it)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             const LabPreset* preset = findLabPreset(lowerCase(v));
+             if (preset == nullptr) {
+                 std::string names;
+                 for (const LabPreset& p : labPresets()) {
+                     names += (names.empty() ? "" : ", ") + std::string(p.name);
+                 }
+                 return expected(("one of " + names).c_str(), v);
+             }
+             preset->apply(s.out.settings);
+             s.out.preset = preset;
+             return {};
+         }},
+        {"--view", "NAME", kRender | kViewer,
+         "beauty (default), or one term alone: albedo, direct, indirect, visibility, normal, "
+         "depth",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseView(lowerCase(v), s.out.settings.view)) {
+                 return expected("beauty, albedo, direct, indirect, visibility, normal or depth",
+                                 v);
+             }
              return {};
          }},
         {"--sampler", "sobol|independent", kRender | kViewer,
@@ -558,6 +585,12 @@ std::string usage(Program program) {
         }
         left.resize(std::max<std::size_t>(left.size() + 2, 26), ' ');
         text << left << option.help << "\n";
+    }
+    if (program != Program::Bench) {
+        text << "\nthe lab's steps (--preset NAME):\n";
+        for (const LabPreset& preset : labPresets()) {
+            text << "  " << preset.name << ": " << preset.shows << "; " << preset.equation << "\n";
+        }
     }
     return text.str();
 }

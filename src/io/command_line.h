@@ -3,6 +3,7 @@
 // Flags override --settings FILE.json, which overrides the defaults (the lab's, or for a mesh the
 // framing of core/scene_framing.h).
 
+#include "core/lab_presets.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
 
@@ -37,11 +38,12 @@ struct CommandLine {
     std::optional<glm::vec3> lookAt; // --look-at, applied after the scene is known
 
     bool help = false;
-    std::string output;       // render: -o FILE
-    std::string saveSettings; // --save-settings FILE.json
-    std::string reference;    // render: --reference FILE.pfm|.exr
-    float targetError = 0.0f; // render: --target-error E, 0 = off
-    bool inspect = false;     // render: --inspect X,Y (then -o is optional)
+    std::string output;                // render: -o FILE
+    std::string saveSettings;          // --save-settings FILE.json
+    std::string reference;             // render: --reference FILE.pfm|.exr
+    float targetError = 0.0f;          // render: --target-error E, 0 = off
+    const LabPreset* preset = nullptr; // --preset NAME, the last one given
+    bool inspect = false;              // render: --inspect X,Y (then -o is optional)
     int inspectX = 0;
     int inspectY = 0;
     // viewer

@@ -53,7 +53,9 @@ OrderedJson toJson(const RenderSettings& s) {
     j["shadows"] = {{"enabled", s.shadows}, {"epsilon", shortFloat(s.shadowEpsilon)}};
     j["image"] = {{"width", s.width}, {"height", s.height}, {"samples", s.samplesPerPixel}};
     j["threads"] = s.threads;
-    j["display"] = {{"mode", toString(s.display)}, {"exposure", shortFloat(s.exposure)}};
+    j["display"] = {{"mode", toString(s.display)},
+                    {"exposure", shortFloat(s.exposure)},
+                    {"view", toString(s.view)}};
     j["integrator"] = {{"kind", toString(s.integrator)},
                        {"max_bounces", s.maxBounces},
                        {"sampler", toString(s.sampler)}};
@@ -113,9 +115,10 @@ public:
             } else if (key == "threads") {
                 ok = leaf(key, value, integer(&work_.threads));
             } else if (key == "display") {
-                ok = section(
-                    key, value,
-                    {{"mode", displayMode(&work_.display)}, {"exposure", number(&work_.exposure)}});
+                ok = section(key, value,
+                             {{"mode", displayMode(&work_.display)},
+                              {"exposure", number(&work_.exposure)},
+                              {"view", viewSetter(&work_.view)}});
             } else if (key == "integrator") {
                 ok = section(key, value,
                              {{"kind", integrator(&work_.integrator)},
@@ -213,6 +216,17 @@ private:
         return [field](const Json& value) -> std::string {
             if (!value.is_string() || !parseDisplayMode(value.get<std::string>(), *field)) {
                 return "must be \"lab\" or \"srgb\", got " + shown(value);
+            }
+            return {};
+        };
+    }
+
+    static Setter viewSetter(View* field) {
+        return [field](const Json& value) -> std::string {
+            if (!value.is_string() || !parseView(value.get<std::string>(), *field)) {
+                return "must be one of beauty, albedo, direct, indirect, visibility, normal, "
+                       "depth; got " +
+                       shown(value);
             }
             return {};
         };

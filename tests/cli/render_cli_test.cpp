@@ -472,5 +472,50 @@ TEST_F(RenderCli, InspectRefusesPixelsOutsideTheImage) {
     expectFailure({"--inspect", "10,10", "--width", "8"}, 2, "outside the 8x500 image");
 }
 
+TEST_F(RenderCli, APresetSetsValuesAndLaterFlagsOverrideIt) {
+    expectFailure({"--preset", "lab-9", "-o", path("x.png")}, 2, "lab-1-intersection");
+    ASSERT_EQ(run({"--preset", "lab-5-shadows", "-o", path("five.pfm")}).exitCode, 0);
+    // Given after the preset, a flag wins: lab-4 with the lab's epsilon is lab-5.
+    ASSERT_EQ(
+        run({"--preset", "lab-4-acne", "--shadow-eps", "0.001", "-o", path("four.pfm")}).exitCode,
+        0);
+    // Given before it, the preset wins.
+    ASSERT_EQ(run({"--shadow-eps", "0.3", "--preset", "lab-5-shadows", "-o", path("before.pfm")})
+                  .exitCode,
+              0);
+    ASSERT_EQ(run({"--preset", "lab-4-acne", "-o", path("acne.pfm")}).exitCode, 0);
+    const std::string five = slurp(path("five.pfm"));
+    ASSERT_FALSE(five.empty());
+    EXPECT_EQ(slurp(path("four.pfm")), five);
+    EXPECT_EQ(slurp(path("before.pfm")), five);
+    EXPECT_NE(slurp(path("acne.pfm")), five);
+    const Outcome help = run({"--help"});
+    EXPECT_NE(help.out.find("lab-4-acne: "), std::string::npos);
+}
+
+TEST_F(RenderCli, ViewsWriteTheirRawNumbersToPfm) {
+    ASSERT_EQ(
+        run({"--view", "direct", "--width", "40", "--height", "30", "-o", path("d.pfm")}).exitCode,
+        0);
+    Framebuffer image;
+    std::string error;
+    ASSERT_TRUE(readPfm(path("d.pfm"), image, error)) << error;
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 40;
+    s.height = 30;
+    s.view = View::Direct;
+    const Framebuffer expected = render(scene, bvh, s);
+    ASSERT_EQ(image.pixels.size(), expected.pixels.size());
+    float brightest = 0.0f;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        ASSERT_EQ(image.pixels[i], expected.pixels[i]) << i;
+        brightest = std::max(brightest, image.pixels[i].x);
+    }
+    EXPECT_GT(brightest, 1.0f); // raw D, not clamped for display
+    expectFailure({"--view", "cost", "-o", path("x.png")}, 2, "--view", {"d.pfm"});
+}
+
 } // namespace
 } // namespace raylab

@@ -41,12 +41,12 @@ float bounceWeight(EmitterStrategy strategy, float bouncePdf, float lightPdf) {
     return 0.0f;
 }
 
-// D at surface s: the lab's light (sampled when it has a radius) and, by next-event estimation,
-// the emitting triangles, weighted against the bounce's chance of hitting them.
-glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
-                   const RenderSettings& settings, const SurfacePoint& s,
-                   const PixelSampler& sampler, uint32_t firstPair, EmitterStrategy strategy,
-                   RayCounts& counts) {
+} // namespace
+
+glm::vec3 pathDirectLight(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
+                          const RenderSettings& settings, const SurfacePoint& s,
+                          const PixelSampler& sampler, uint32_t firstPair, EmitterStrategy strategy,
+                          RayCounts& counts) {
     glm::vec3 direct(0.0f);
     if (settings.light.intensity > 0.0f) {
         const LightSample light =
@@ -81,8 +81,6 @@ glm::vec3 directAt(const Scene& scene, const Bvh& bvh, const EmitterTable& emitt
     return direct;
 }
 
-} // namespace
-
 PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                      const RenderSettings& settings, const Ray& cameraRay,
                      const PixelSampler& sampler, RayCounts& counts, EmitterStrategy strategy,
@@ -98,8 +96,8 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
     // The camera sees an emitter's whole emission: E = pi * Le.
     const glm::vec3 emitted =
         kPi * emittedRadiance(scene, hit.triangle, cameraRay.direction, settings.emissionScale);
-    const glm::vec3 firstDirect =
-        directAt(scene, bvh, emitters, settings, first, sampler, kPathFirstPair, strategy, counts);
+    const glm::vec3 firstDirect = pathDirectLight(scene, bvh, emitters, settings, first, sampler,
+                                                  kPathFirstPair, strategy, counts);
     if (record) {
         record->push_back({first.point, first.rho, firstDirect, emitted + first.rho * firstDirect});
     }
@@ -143,8 +141,8 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
         s = surfaceAt(scene, ray, hit);
         const uint32_t nextPairs =
             kPathFirstPair + kPathPairsPerVertex * static_cast<uint32_t>(bounce);
-        const glm::vec3 direct =
-            directAt(scene, bvh, emitters, settings, s, sampler, nextPairs, strategy, counts);
+        const glm::vec3 direct = pathDirectLight(scene, bvh, emitters, settings, s, sampler,
+                                                 nextPairs, strategy, counts);
         found += weight * s.rho * direct;
         indirect += found;
         if (record) {

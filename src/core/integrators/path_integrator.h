@@ -47,6 +47,15 @@ struct PathVertexRecord {
 // weight 1 (tests check that the three agree, and that MIS has the lowest variance).
 enum class EmitterStrategy { Mis, LightSamplingOnly, BounceOnly };
 
+// D at surface s as the path integrator computes it: the lab's light (one sample of the sphere
+// when it has a radius, pair firstPair + 2) and, by next-event estimation, the emitting triangles
+// (pairs firstPair and firstPair + 1), weighted by `strategy` against the bounce's chance of
+// hitting them; shadow rays counted.
+glm::vec3 pathDirectLight(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
+                          const RenderSettings& settings, const SurfacePoint& s,
+                          const PixelSampler& sampler, uint32_t firstPair, EmitterStrategy strategy,
+                          RayCounts& counts);
+
 // One sample of R along cameraRay. `emitters` is buildEmitterTable(scene) (empty for a scene with
 // none). Counts the camera ray as primary, shadow rays as shadow and bounce rays as bounce.
 // Deterministic in (sampler, arguments).

@@ -2,6 +2,7 @@
 
 #include "camera.h"
 #include "integrators/path_integrator.h"
+#include "integrators/term_views.h"
 #include "lights/sphere_light.h"
 #include "render/pass_tiles.h"
 #include "sampling/hash.h"
@@ -52,11 +53,21 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                     const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
                     const PixelSampler sampler(settings.sampler, static_cast<uint32_t>(pixel),
                                                sampleIndex);
-                    glm::vec3 value;
+                    // Pixel positions: the path integrator's from its sampler, the lab's own.
+                    glm::vec2 offset;
                     if (path) {
-                        const glm::vec2 offset = sampler.get2D(0);
-                        const Ray ray = rays.through(static_cast<float>(x) + offset.x,
-                                                     static_cast<float>(y) + offset.y);
+                        offset = sampler.get2D(0);
+                    } else {
+                        const PixelOffset o = samplePixelOffset(
+                            static_cast<uint32_t>(x), static_cast<uint32_t>(y), sampleIndex);
+                        offset = glm::vec2(o.dx, o.dy);
+                    }
+                    const Ray ray = rays.through(static_cast<float>(x) + offset.x,
+                                                 static_cast<float>(y) + offset.y);
+                    glm::vec3 value;
+                    if (settings.view != View::Beauty) {
+                        value = shadeView(scene, bvh, emitters, settings, ray, sampler, tileCounts);
+                    } else if (path) {
                         const PathSample sample =
                             tracePath(scene, bvh, emitters, settings, ray, sampler, tileCounts);
                         value = sample.radiance;
@@ -65,10 +76,6 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                             indirect[pixel] = first ? n : indirect[pixel] + n;
                         }
                     } else {
-                        const PixelOffset offset = samplePixelOffset(
-                            static_cast<uint32_t>(x), static_cast<uint32_t>(y), sampleIndex);
-                        const Ray ray = rays.through(static_cast<float>(x) + offset.dx,
-                                                     static_cast<float>(y) + offset.dy);
                         value = shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts);
                     }
                     sums[pixel] = first ? value : sums[pixel] + value;

@@ -1,6 +1,7 @@
 #pragma once
-// A pass that traces each pixel's sample on its own: the path integrator, and the lab integrator
-// where its fast pass does not apply (a sphere light, or emitting triangles). Each pixel's numbers
+// A pass that traces each pixel's sample on its own: the path integrator, the lab integrator
+// where its fast pass does not apply (a sphere light, or emitting triangles), and the views of
+// one term (term_views.h). Each pixel's numbers
 // come from a PixelSampler of (pixel, sample index), so any thread count gives the same bytes.
 //
 // Pixel positions: the lab integrator keeps its own (sample 0 at the centre, then the per-(pixel,

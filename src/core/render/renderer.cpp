@@ -8,7 +8,7 @@
 namespace raylab {
 
 FilmLayers filmLayersFor(const RenderSettings& settings) {
-    const bool path = settings.integrator == Integrator::Path;
+    const bool path = settings.integrator == Integrator::Path && settings.view == View::Beauty;
     return FilmLayers{path, path};
 }
 
@@ -17,7 +17,8 @@ bool renderPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
     assert(film.width() == settings.width && film.height() == settings.height);
     bool complete = false;
     const bool emitting = hasEmittingMaterial(scene);
-    if (settings.integrator == Integrator::Lab && settings.light.radius == 0.0f && !emitting) {
+    if (settings.integrator == Integrator::Lab && settings.light.radius == 0.0f && !emitting &&
+        settings.view == View::Beauty) {
         complete = labPass(scene, bvh, settings, film, counts, options);
     } else {
         EmitterTable built;

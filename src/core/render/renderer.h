@@ -18,9 +18,9 @@ namespace raylab {
 FilmLayers filmLayersFor(const RenderSettings& settings);
 
 // Adds sample film.samples() of every pixel to the film (settings.width x settings.height; it
-// must be that size) and counts it. The lab integrator with the lab's point light and no emitter
-// takes the packet and 8 x 8 block paths (integrators/lab_pass.h); every other case traces each
-// pixel's sample on its own (integrators/sampled_pass.h). When cancelled returns false and
+// must be that size) and counts it. The lab integrator's beauty with the lab's point light and no
+// emitter takes the packet and 8 x 8 block paths (integrators/lab_pass.h); every other case traces
+// each pixel's sample on its own (integrators/sampled_pass.h). When cancelled returns false and
 // restarts the film, whose sums are then partly updated and worthless.
 bool renderPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
                 RayCounts* counts = nullptr, const PassOptions& options = {});
