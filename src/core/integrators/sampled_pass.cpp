@@ -24,7 +24,7 @@ glm::vec3 shadeLabSampled(const Scene& scene, const Bvh& bvh, const RenderSettin
     const LightSample light =
         sampleSphereLight(settings, s.point, s.facingNormal, sampler.get2D(1));
     glm::vec3 direct = light.direct;
-    if (light.needsShadowRay) {
+    if (light.needsShadowRay && direct != glm::vec3(0.0f)) {
         ++counts.shadow;
         if (anyHit(bvh, light.shadowRay)) {
             direct = glm::vec3(0.0f);
@@ -65,18 +65,19 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                     const Ray ray = rays.through(static_cast<float>(x) + offset.x,
                                                  static_cast<float>(y) + offset.y);
                     glm::vec3 value;
+                    glm::vec4 n(0.0f); // the path integrator's N and whether it hit
                     if (settings.view != View::Beauty) {
                         value = shadeView(scene, bvh, emitters, settings, ray, sampler, tileCounts);
                     } else if (path) {
                         const PathSample sample =
                             tracePath(scene, bvh, emitters, settings, ray, sampler, tileCounts);
                         value = sample.radiance;
-                        if (!indirect.empty()) {
-                            const glm::vec4 n(sample.indirect, sample.hit ? 1.0f : 0.0f);
-                            indirect[pixel] = first ? n : indirect[pixel] + n;
-                        }
+                        n = glm::vec4(sample.indirect, sample.hit ? 1.0f : 0.0f);
                     } else {
                         value = shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts);
+                    }
+                    if (!indirect.empty()) {
+                        indirect[pixel] = first ? n : indirect[pixel] + n;
                     }
                     sums[pixel] = first ? value : sums[pixel] + value;
                     if (!squares.empty()) {
