@@ -19,8 +19,19 @@ bool hitNode(const BoxRay& r, const BvhNode& node, float limit, float& tNear) {
 
 // Visits the leaves whose boxes the ray enters, nearest child first, skipping nodes that start
 // beyond limit(). visitLeaf(node) returns true to stop the traversal.
-template <class Limit, class VisitLeaf>
-void traverseBinary(const Bvh& bvh, const BoxRay& r, Limit limit, VisitLeaf visitLeaf) {
+// What a traversal counts: nothing, or a TraversalCost.
+struct NoCost {
+    void node() {}
+    void triangles(uint32_t) {}
+};
+struct CountCost {
+    TraversalCost& cost;
+    void node() { ++cost.nodes; }
+    void triangles(uint32_t n) { cost.triangles += n; }
+};
+
+template <class Limit, class VisitLeaf, class Cost>
+void traverseBinary(const Bvh& bvh, const BoxRay& r, Limit limit, VisitLeaf visitLeaf, Cost cost) {
     struct Entry {
         uint32_t node;
         float tNear;
@@ -38,7 +49,9 @@ void traverseBinary(const Bvh& bvh, const BoxRay& r, Limit limit, VisitLeaf visi
             continue;
         }
         const BvhNode& node = bvh.nodes[e.node];
+        cost.node();
         if (node.isLeaf()) {
+            cost.triangles(node.count);
             if (visitLeaf(node)) {
                 return;
             }
@@ -59,9 +72,7 @@ void traverseBinary(const Bvh& bvh, const BoxRay& r, Limit limit, VisitLeaf visi
     }
 }
 
-} // namespace
-
-Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
+template <class Cost> Hit closestHitBinary(const Bvh& bvh, const Ray& ray, Cost cost) {
     const WatertightRay wray(ray);
     Hit best;
     if (bvh.nodes.empty() || !wray.valid) {
@@ -81,11 +92,12 @@ Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
                 }
             }
             return false;
-        });
+        },
+        cost);
     return best;
 }
 
-bool anyHitScalar(const Bvh& bvh, const Ray& ray) {
+template <class Cost> bool anyHitBinary(const Bvh& bvh, const Ray& ray, Cost cost) {
     const WatertightRay wray(ray);
     if (bvh.nodes.empty() || !wray.valid) {
         return false;
@@ -103,8 +115,30 @@ bool anyHitScalar(const Bvh& bvh, const Ray& ray) {
                 }
             }
             return false;
-        });
+        },
+        cost);
     return found;
+}
+
+} // namespace
+
+Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
+    return closestHitBinary(bvh, ray, NoCost{});
+}
+bool anyHitScalar(const Bvh& bvh, const Ray& ray) { return anyHitBinary(bvh, ray, NoCost{}); }
+
+Hit closestHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
+    if (bvh.wideNodes.empty()) {
+        return closestHitBinary(bvh, ray, CountCost{cost});
+    }
+    return closestHitWideCounted(bvh, ray, cost);
+}
+
+bool anyHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
+    if (bvh.wideNodes.empty()) {
+        return anyHitBinary(bvh, ray, CountCost{cost});
+    }
+    return anyHitWideCounted(bvh, ray, cost);
 }
 
 Hit closestHit(const Bvh& bvh, const Ray& ray) {

@@ -164,9 +164,19 @@ RAYLAB_AVX2 inline uint32_t pushChildren(const BvhWideNode& node, int mask, __m2
     return hits[n - 1].ref;
 }
 
-} // namespace
+// What a traversal counts: nothing (the renderer's), or a TraversalCost.
+struct NoCost {
+    void node() {}
+    void block() {}
+};
+struct CountCost {
+    TraversalCost& cost;
+    void node() { ++cost.nodes; }
+    void block() { cost.triangles += kWideLanes; }
+};
 
-RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
+template <class Cost>
+RAYLAB_AVX2 Hit closestHitWideWith(const Bvh& bvh, const Ray& original, Cost cost) {
     WideRay r;
     Hit best;
     if (!makeWideRay(original, r)) {
@@ -181,6 +191,7 @@ RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
         if (!isLeaf(ref)) {
             __m256 tNear;
             const BvhWideNode& node = bvh.wideNodes[ref];
+            cost.node();
             const int mask = hitChildren(node, r, limit, tNear);
             if (mask != 0) {
                 ref = pushChildren(node, mask, tNear, stack, size);
@@ -190,6 +201,7 @@ RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
             const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
             for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
                 const LaneHits h = intersectBlock(*block, r);
+                cost.block();
                 const unsigned closer =
                     h.hits & static_cast<unsigned>(_mm256_movemask_ps(
                                  _mm256_cmp_ps(h.t, _mm256_set1_ps(limit), _CMP_LE_OQ)));
@@ -240,7 +252,8 @@ RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& original) {
     }
 }
 
-RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
+template <class Cost>
+RAYLAB_AVX2 bool anyHitWideWith(const Bvh& bvh, const Ray& original, Cost cost) {
     WideRay r;
     if (!makeWideRay(original, r)) {
         return false;
@@ -253,6 +266,7 @@ RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
         if (!isLeaf(ref)) {
             __m256 tNear;
             const BvhWideNode& node = bvh.wideNodes[ref];
+            cost.node();
             const int mask = hitChildren(node, r, limit, tNear);
             // Order does not matter for any hit: push all but one, descend into that one.
             if (mask != 0) {
@@ -267,6 +281,7 @@ RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
             const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
             for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
                 const LaneHits h = intersectBlock(*block, r);
+                cost.block();
                 if (h.hits != 0) {
                     return true;
                 }
@@ -285,6 +300,21 @@ RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
     }
 }
 
+} // namespace
+
+RAYLAB_AVX2 Hit closestHitWide(const Bvh& bvh, const Ray& ray) {
+    return closestHitWideWith(bvh, ray, NoCost{});
+}
+RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& ray) {
+    return anyHitWideWith(bvh, ray, NoCost{});
+}
+RAYLAB_AVX2 Hit closestHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
+    return closestHitWideWith(bvh, ray, CountCost{cost});
+}
+RAYLAB_AVX2 bool anyHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
+    return anyHitWideWith(bvh, ray, CountCost{cost});
+}
+
 } // namespace raylab
 
 #else // not x86: buildBvh never builds the wide form, so these are never called.
@@ -292,6 +322,8 @@ RAYLAB_AVX2 bool anyHitWide(const Bvh& bvh, const Ray& original) {
 namespace raylab {
 Hit closestHitWide(const Bvh&, const Ray&) { return Hit{}; }
 bool anyHitWide(const Bvh&, const Ray&) { return false; }
+Hit closestHitWideCounted(const Bvh&, const Ray&, TraversalCost&) { return Hit{}; }
+bool anyHitWideCounted(const Bvh&, const Ray&, TraversalCost&) { return false; }
 } // namespace raylab
 
 #endif

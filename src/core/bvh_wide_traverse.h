@@ -11,5 +11,8 @@ namespace raylab {
 // Rays that WatertightRay calls invalid hit nothing.
 Hit closestHitWide(const Bvh& bvh, const Ray& ray);
 bool anyHitWide(const Bvh& bvh, const Ray& ray);
+// The same, adding what they visit to `cost`.
+Hit closestHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
+bool anyHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
 
 } // namespace raylab

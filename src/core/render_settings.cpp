@@ -133,9 +133,10 @@ namespace raylab {
 
 namespace {
 constexpr std::pair<View, const char*> kViewNames[] = {
-    {View::Beauty, "beauty"},     {View::Albedo, "albedo"},         {View::Direct, "direct"},
-    {View::Indirect, "indirect"}, {View::Visibility, "visibility"}, {View::Normal, "normal"},
-    {View::Depth, "depth"},
+    {View::Beauty, "beauty"},         {View::Albedo, "albedo"},
+    {View::Direct, "direct"},         {View::Indirect, "indirect"},
+    {View::Visibility, "visibility"}, {View::Normal, "normal"},
+    {View::Depth, "depth"},           {View::Cost, "cost"},
 };
 } // namespace
 

@@ -30,6 +30,8 @@ enum class View {
     Visibility, // the fraction of the light the point sees: 0 in shadow, between in a penumbra
     Normal,     // the facing normal, n * 0.5 + 0.5
     Depth,      // t along the camera ray, in world units
+    Cost,       // BVH nodes visited and triangles tested for the camera and shadow rays, as a
+                // heat colour (heatColor of costHeat, term_views.h)
 };
 
 // The lab's light. Its power P = color * intensity, in watts per colour channel. With radius 0 it

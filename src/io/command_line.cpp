@@ -269,11 +269,11 @@ const std::vector<Option>& options() {
          }},
         {"--view", "NAME", kRender | kViewer,
          "beauty (default), or one term alone: albedo, direct, indirect, visibility, normal, "
-         "depth",
+         "depth, cost",
          [](const std::string& v, ParseState& s) -> std::string {
              if (!parseView(lowerCase(v), s.out.settings.view)) {
-                 return expected("beauty, albedo, direct, indirect, visibility, normal or depth",
-                                 v);
+                 return expected(
+                     "beauty, albedo, direct, indirect, visibility, normal, depth or cost", v);
              }
              return {};
          }},

@@ -16,6 +16,10 @@ std::string inspectionToJson(const PixelInspection& p) {
     OrderedJson j;
     j["pixel"] = {p.x, p.y};
     j["hit"] = p.hit;
+    j["cost"] = {{"camera_nodes", p.cameraCost.nodes},
+                 {"camera_triangles", p.cameraCost.triangles},
+                 {"shadow_nodes", p.shadowCost.nodes},
+                 {"shadow_triangles", p.shadowCost.triangles}};
     if (p.hit) {
         j["triangle"] = p.triangle;
         j["material"] = p.material;

@@ -225,7 +225,7 @@ private:
         return [field](const Json& value) -> std::string {
             if (!value.is_string() || !parseView(value.get<std::string>(), *field)) {
                 return "must be one of beauty, albedo, direct, indirect, visibility, normal, "
-                       "depth; got " +
+                       "depth, cost; got " +
                        shown(value);
             }
             return {};

@@ -2,8 +2,10 @@
 // visibility is 0 exactly where the shadow test says so, and the other views are what they say.
 
 #include "core/bvh.h"
+#include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"
+#include "core/integrators/term_views.h"
 #include "core/render/renderer.h"
 
 #include <cstring>
@@ -111,6 +113,58 @@ TEST_F(TermViews, ThePathIntegratorsIndirectViewIsItsN) {
         total += sum.x;
     }
     EXPECT_GT(total, 0.0);
+}
+
+TEST_F(TermViews, CostIsTheHeatOfTheCountedTraversals) {
+    EXPECT_EQ(costHeat(0.0f), 0.0f);
+    EXPECT_EQ(costHeat(kCostHeatMax), 1.0f);
+    EXPECT_EQ(costHeat(1e6f), 1.0f);
+    EXPECT_LT(costHeat(10.0f), costHeat(100.0f));
+    EXPECT_EQ(heatColor(0.0f), glm::vec3(0.0f));
+    EXPECT_EQ(heatColor(1.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(heatColor(0.6f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const Framebuffer cost = view(View::Cost);
+    int checked = 0;
+    for (int y = 0; y < settings.height; y += 9) {
+        for (int x = 0; x < settings.width; x += 9) {
+            const PixelInspection p = inspectPixel(scene, bvh, EmitterTable(), settings, x, y);
+            const float ops = static_cast<float>(p.cameraCost.nodes + p.cameraCost.triangles +
+                                                 p.shadowCost.nodes + p.shadowCost.triangles);
+            ASSERT_EQ(cost.at(x, y), heatColor(costHeat(ops))) << x << ", " << y;
+            EXPECT_GE(p.cameraCost.nodes, 1u);
+            checked += p.hit ? 1 : 0;
+        }
+    }
+    EXPECT_GT(checked, 50);
+}
+
+TEST(TraversalCost, CountedQueriesGiveTheSameAnswersAndCountWhatTheyVisit) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    BvhBuildOptions scalarOnly;
+    scalarOnly.simd = false;
+    const Bvh binary = buildBvh(scene, scalarOnly);
+    const PrimaryRays rays(Camera(), 64, 64);
+    for (const Bvh* b : {&bvh, &binary}) {
+        for (int i = 0; i < 64 * 64; i += 37) {
+            const Ray ray =
+                rays.through(static_cast<float>(i % 64) + 0.5f, static_cast<float>(i / 64) + 0.5f);
+            TraversalCost cost;
+            const Hit counted = closestHitCounted(*b, ray, cost);
+            const Hit plain = closestHit(*b, ray);
+            ASSERT_EQ(counted.triangle, plain.triangle);
+            ASSERT_EQ(counted.t, plain.t);
+            EXPECT_GE(cost.nodes, 1u);
+            EXPECT_GE(cost.triangles, 1u);
+            if (b == &bvh && !bvh.wideNodes.empty()) {
+                EXPECT_EQ(cost.triangles % 8, 0u); // whole SIMD blocks
+            }
+            TraversalCost shadow;
+            Ray up = ray;
+            up.tMax = counted.t * 0.5f;
+            EXPECT_EQ(anyHitCounted(*b, up, shadow), anyHit(*b, up));
+        }
+    }
 }
 
 } // namespace

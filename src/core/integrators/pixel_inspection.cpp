@@ -24,7 +24,7 @@ PixelInspection inspectPixel(const Scene& scene, const Bvh& bvh, const EmitterTa
     out.y = y;
     const PrimaryRays rays(settings.camera, settings.width, settings.height);
     const Ray ray = rays.through(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-    const Hit hit = closestHit(bvh, ray);
+    const Hit hit = closestHitCounted(bvh, ray, out.cameraCost);
     if (!hit.found()) {
         return out;
     }
@@ -50,6 +50,7 @@ PixelInspection inspectPixel(const Scene& scene, const Bvh& bvh, const EmitterTa
     if (point.needsShadowRay) {
         out.shadowTested = true;
         const Hit blocker = closestHit(bvh, point.shadowRay);
+        anyHitCounted(bvh, point.shadowRay, out.shadowCost);
         if (blocker.found()) {
             out.blocker = ShadowBlocker{blocker.triangle, blocker.t};
         }

@@ -52,6 +52,8 @@ struct PixelInspection {
     glm::vec3 emitted{0.0f};    // E = pi * Le of an emitting front face
     glm::vec3 radiance{0.0f};   // R
     std::array<uint8_t, 3> display{0, 0, 0}; // R after the display transform
+    TraversalCost cameraCost;                // the camera ray's closest hit
+    TraversalCost shadowCost;                // the shadow ray to the light's centre
     std::vector<PathVertexRecord> path;      // the path integrator's first sample
 };
 

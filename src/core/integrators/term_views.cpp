@@ -3,6 +3,9 @@
 #include "integrators/path_integrator.h"
 #include "lights/sphere_light.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace raylab {
 
 namespace {
@@ -24,10 +27,38 @@ float visibleSample(const Bvh& bvh, const RenderSettings& settings, const Surfac
 
 } // namespace
 
+float costHeat(float ops) {
+    const float t = std::log2(1.0f + std::max(0.0f, ops)) / std::log2(1.0f + kCostHeatMax);
+    return std::min(t, 1.0f);
+}
+
+glm::vec3 heatColor(float t) {
+    static constexpr glm::vec3 kStops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1},
+                                           {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};
+    const float x = std::clamp(t, 0.0f, 1.0f) * 5.0f;
+    const int i = std::min(static_cast<int>(x), 4);
+    const float f = x - static_cast<float>(i);
+    return kStops[i] * (1.0f - f) + kStops[i + 1] * f;
+}
+
 glm::vec3 shadeView(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                     const RenderSettings& settings, const Ray& cameraRay,
                     const PixelSampler& sampler, RayCounts& counts) {
     ++counts.primary;
+    if (settings.view == View::Cost) {
+        // The camera ray's closest hit and the lab's shadow ray, counted.
+        TraversalCost cost;
+        const Hit hit = closestHitCounted(bvh, cameraRay, cost);
+        if (hit.found()) {
+            const SurfacePoint s = surfaceAt(scene, cameraRay, hit);
+            const LightSample light = lightAt(settings, s.point, s.facingNormal);
+            if (light.needsShadowRay) {
+                ++counts.shadow;
+                anyHitCounted(bvh, light.shadowRay, cost);
+            }
+        }
+        return heatColor(costHeat(static_cast<float>(cost.nodes + cost.triangles)));
+    }
     const Hit hit = closestHit(bvh, cameraRay);
     if (!hit.found()) {
         return glm::vec3(0.0f);
@@ -35,7 +66,8 @@ glm::vec3 shadeView(const Scene& scene, const Bvh& bvh, const EmitterTable& emit
     const SurfacePoint s = surfaceAt(scene, cameraRay, hit);
     const bool path = settings.integrator == Integrator::Path;
     switch (settings.view) {
-    case View::Beauty: break;
+    case View::Beauty:
+    case View::Cost: break;
     case View::Albedo: return s.rho;
     case View::Normal: return s.facingNormal * 0.5f + glm::vec3(0.5f);
     case View::Depth: return glm::vec3(hit.t);

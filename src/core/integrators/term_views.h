@@ -15,6 +15,13 @@
 
 namespace raylab {
 
+// The cost view's scale: ops (BVH nodes visited plus triangles tested) to [0, 1] on a log scale,
+// log2(1 + ops) / log2(1 + kCostHeatMax), 1 from kCostHeatMax operations on.
+inline constexpr float kCostHeatMax = 1024.0f;
+float costHeat(float ops);
+// A colour ramp over [0, 1]: black, blue (0.2), cyan (0.4), green (0.6), yellow (0.8), red (1).
+glm::vec3 heatColor(float t);
+
 // One sample of settings.view (not View::Beauty) along cameraRay. The lab integrator's D is its
 // light's (one sample of the sphere from the sampler's pair 1, as shadeLabSampled); the path
 // integrator's adds the emitting triangles, and its N is one path's estimate.
