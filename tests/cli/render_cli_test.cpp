@@ -514,7 +514,7 @@ TEST_F(RenderCli, ViewsWriteTheirRawNumbersToPfm) {
         brightest = std::max(brightest, image.pixels[i].x);
     }
     EXPECT_GT(brightest, 1.0f); // raw D, not clamped for display
-    expectFailure({"--view", "cost", "-o", path("x.png")}, 2, "--view", {"d.pfm"});
+    expectFailure({"--view", "heat", "-o", path("x.png")}, 2, "--view", {"d.pfm"});
 }
 
 } // namespace
