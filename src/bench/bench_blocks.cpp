@@ -1,7 +1,7 @@
 #include "bench_blocks.h"
 
-#include "core/bvh_frustum.h"
-#include "core/bvh_packet.h"
+#include "core/bvh/bvh_frustum.h"
+#include "core/bvh/bvh_packet.h"
 
 #include <algorithm>
 

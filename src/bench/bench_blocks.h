@@ -8,8 +8,8 @@
 // before any timing.
 
 #include "bench_rays.h"
-#include "core/bvh.h"
-#include "core/bvh_frustum.h"
+#include "core/bvh/bvh.h"
+#include "core/bvh/bvh_frustum.h"
 #include "core/camera.h"
 #include "core/ray_packet.h"
 

@@ -2,7 +2,7 @@
 // writes the image by its extension. Exit codes: 0 done, 2 usage error, 1 anything else; every
 // error is one line on stderr and leaves no output file behind.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/integrators/pixel_inspection.h"
 #include "core/lights/emitters.h"
 #include "core/render/film.h"

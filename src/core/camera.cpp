@@ -1,6 +1,6 @@
 #include "camera.h"
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "watertight_avx2.h"
 
 #include <algorithm>

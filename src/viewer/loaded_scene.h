@@ -2,7 +2,7 @@
 // A scene ready to render: its triangles and their BVH, built once and shared read-only between
 // the UI thread and the render thread (the render thread keeps it alive while a pass runs).
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/lights/emitters.h"
 #include "core/scene.h"
 

@@ -1,8 +1,8 @@
 #pragma once
 // Compares the BVH's answers (SIMD and scalar paths) with brute force, ray by ray.
 
-#include "core/brute_force.h"
-#include "core/bvh.h"
+#include "core/bvh/brute_force.h"
+#include "core/bvh/bvh.h"
 
 #include <cstring>
 #include <gtest/gtest.h>

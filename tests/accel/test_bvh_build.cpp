@@ -5,9 +5,9 @@
 
 #include "accel_check.h"
 #include "accel_scenes.h"
-#include "core/bvh_build_clip.h"
-#include "core/bvh_build_team.h"
-#include "core/bvh_clip.h"
+#include "core/bvh/build/bvh_build_clip.h"
+#include "core/bvh/build/bvh_build_team.h"
+#include "core/bvh/build/bvh_clip.h"
 
 #include <atomic>
 #include <cstring>

@@ -4,8 +4,8 @@
 
 #include "accel_check.h"
 #include "accel_scenes.h"
-#include "core/bvh_frustum.h"
-#include "core/bvh_packet.h"
+#include "core/bvh/bvh_frustum.h"
+#include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/render_settings.h"

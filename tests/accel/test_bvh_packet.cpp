@@ -3,7 +3,7 @@
 
 #include "accel_check.h"
 #include "accel_scenes.h"
-#include "core/bvh_packet.h"
+#include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 

@@ -4,7 +4,7 @@
 
 #include "accel_check.h"
 #include "accel_scenes.h"
-#include "core/bvh_packet.h"
+#include "core/bvh/bvh_packet.h"
 
 #include <cstring>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // raylab-render as a user runs it: each bad input gives its exit code, exactly one line on stderr
 // and no file; good runs give images that read back as the core renders them.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"
 #include "core/render/image_error.h"

@@ -1,6 +1,6 @@
 // The lab's box: its geometry, the colours where DESIGN.md puts them, shadows, and shadow acne.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/render/renderer.h"
 

@@ -1,6 +1,6 @@
 // Display transforms: the lab's clamp and sRGB with exposure.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/render/display_transform.h"
 #include "core/render/srgb_quantizer.h"
 

@@ -2,7 +2,7 @@
 // several settings, taken from PFM files written by raylab-render before the Film and the
 // integrators existed (commit 625e83c), whose bytes this build reproduces.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/render/renderer.h"
 

@@ -1,7 +1,7 @@
 // The lab's light model against closed-form answers on an analytic scene: one large quad facing
 // the camera, a point light, and (for shadows) a small square blocker.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/render/renderer.h"
 #include "test_meshes.h"
 

@@ -1,6 +1,6 @@
 // The lab's steps: each preset renders what its name says.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"
 #include "core/lab_presets.h"

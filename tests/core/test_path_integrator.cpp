@@ -2,7 +2,7 @@
 // Noisy results are checked statistically: fixed seeds, and tolerances of a few standard errors
 // of the estimate, measured from the film's per-pixel second moments.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/integrators/path_integrator.h"
 #include "core/render/film.h"

@@ -2,7 +2,7 @@
 // precision (the lab's camera, the 30 triangles, the lab's equation by hand), and against
 // render() for the pixel's value.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"

@@ -3,7 +3,7 @@
 // (every pixel of renderPass == shadeLab of the ray through its sample point, stored or
 // added to the sums before).
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/render/renderer.h"

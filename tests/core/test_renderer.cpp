@@ -1,6 +1,6 @@
 // The renderer: determinism across thread counts, progressive accumulation, cancellation.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/render/display_transform.h"
 #include "core/render/renderer.h"

@@ -1,7 +1,7 @@
 // The views of one term: beauty = albedo * (direct + indirect) for the lab integrator, the
 // visibility is 0 exactly where the shadow test says so, and the other views are what they say.
 
-#include "core/bvh.h"
+#include "core/bvh/bvh.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"

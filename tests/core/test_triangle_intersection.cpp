@@ -1,6 +1,6 @@
 // The watertight ray-triangle test: exact hits, edges, closed meshes, and hostile input.
 
-#include "core/brute_force.h"
+#include "core/bvh/brute_force.h"
 #include "core/triangle_intersection.h"
 #include "test_meshes.h"
 

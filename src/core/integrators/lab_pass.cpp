@@ -1,6 +1,6 @@
 #include "integrators/lab_pass.h"
 
-#include "bvh_packet.h"
+#include "bvh/bvh_packet.h"
 #include "camera.h"
 #include "render/pass_tiles.h"
 #include "sampling/hash.h"

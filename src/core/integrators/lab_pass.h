@@ -4,7 +4,7 @@
 // samples jittered by a per-(pixel, sample) hash), traced as AVX2 packets and, for small scenes,
 // through frustum candidates; every answer is shadeLab's bit for bit.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "integrators/lab_shading.h"
 #include "render/film.h"
 #include "render/pass_options.h"

@@ -8,8 +8,8 @@
 // The model is written once, in stages (surfaceAt, lightAt, labRadiance); shadeLab runs them for
 // one ray, shadeLab8 (lab_shading_packet.cpp) for a packet of rays with the same results.
 
-#include "bvh.h"
-#include "bvh_frustum.h"
+#include "bvh/bvh.h"
+#include "bvh/bvh_frustum.h"
 #include "lights/point_light.h"
 #include "ray_packet.h"
 #include "render_settings.h"

@@ -3,8 +3,8 @@
 // every packet of a large scene, are traced one by one through the BVH. Either way each lane's
 // radiance is shadeLab8's.
 
-#include "bvh_frustum.h"
-#include "bvh_packet.h"
+#include "bvh/bvh_frustum.h"
+#include "bvh/bvh_packet.h"
 #include "integrators/lab_shading.h"
 #include "integrators/lab_shading_stages.h"
 

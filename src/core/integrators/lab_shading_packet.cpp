@@ -7,7 +7,7 @@
 // where it has them. Rays, hits and shadow rays stay in structure-of-arrays form (ray_packet.h)
 // throughout.
 
-#include "bvh_packet.h"
+#include "bvh/bvh_packet.h"
 #include "integrators/lab_shading.h"
 #include "integrators/lab_shading_stages.h"
 #include "watertight_avx2.h"

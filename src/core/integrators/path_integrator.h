@@ -10,7 +10,7 @@
 // heuristic): sampled directly (next-event estimation, a triangle chosen by power) and hit by
 // chance by the cosine-weighted bounce. The lab's light is only sampled (it is not geometry).
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "integrators/lab_shading.h"
 #include "lights/emitters.h"
 #include "render_settings.h"

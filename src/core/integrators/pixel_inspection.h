@@ -7,7 +7,7 @@
 // its centre). With the path integrator, N is the first sample's estimate and `path` lists that
 // sample's surfaces.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "integrators/path_integrator.h"
 #include "lights/emitters.h"
 #include "render_settings.h"

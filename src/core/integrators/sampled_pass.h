@@ -8,7 +8,7 @@
 // sample) hash of sampling/hash.h), so that its pictures match the fast pass's; the path
 // integrator draws them from the sampler's pair 0, like every other dimension.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "integrators/lab_shading.h"
 #include "lights/emitters.h"
 #include "render/film.h"

@@ -4,7 +4,7 @@
 // settings computes them, so that for the lab integrator beauty = albedo * (direct + indirect)
 // sample by sample. 0 where the ray hits nothing.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "integrators/lab_shading.h"
 #include "lights/emitters.h"
 #include "render_settings.h"

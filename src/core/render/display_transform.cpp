@@ -1,6 +1,6 @@
 #include "render/display_transform.h"
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "render/srgb_quantizer.h"
 #include "watertight_avx2.h"
 

@@ -3,7 +3,7 @@
 // integrator the settings choose (integrators/). Tiles are spread over threads; every pixel's
 // samples are summed in order on one thread, so the bytes never depend on the thread count.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "integrators/lab_shading.h"
 #include "render/film.h"
 #include "render/framebuffer.h"

@@ -1,4 +1,4 @@
-#include "brute_force.h"
+#include "bvh/brute_force.h"
 
 #include "triangle_intersection.h"
 

@@ -1,4 +1,4 @@
-#include "bvh_build_team.h"
+#include "bvh/build/bvh_build_team.h"
 
 namespace raylab {
 

@@ -10,12 +10,12 @@
 // own closest hit, as the single-ray traversal does, so the visiting order (the packet's) does
 // not change its answer.
 
-#include "bvh_packet_traverse.h"
+#include "bvh/traverse/bvh_packet_traverse.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 
-#include "bvh_collapse.h"
-#include "bvh_packet_lanes.h"
+#include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_packet_lanes.h"
 
 namespace raylab {
 

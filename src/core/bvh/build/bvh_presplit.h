@@ -9,8 +9,8 @@
 // box, so traversal still finds every hit, and a repeated triangle gives the same t, u, v and
 // index wherever it is tested, so answers do not change.
 
-#include "bvh_binning.h"
-#include "bvh_build_team.h"
+#include "bvh/build/bvh_binning.h"
+#include "bvh/build/bvh_build_team.h"
 #include "scene.h"
 
 #include <vector>

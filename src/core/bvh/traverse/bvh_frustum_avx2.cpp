@@ -2,13 +2,13 @@
 // apex, one pair per axis of a basis (u, v) across the group's mean direction c: the tangents
 // a = (w.u) / (w.c) and b = (w.v) / (w.c) of every ray's vector w lie in [a0, a1] x [b0, b1].
 
-#include "bvh_frustum.h"
-#include "bvh_packet.h"
+#include "bvh/bvh_frustum.h"
+#include "bvh/bvh_packet.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 
-#include "bvh_collapse.h"
-#include "bvh_packet_lanes.h"
+#include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_packet_lanes.h"
 
 #include <algorithm>
 #include <cmath>

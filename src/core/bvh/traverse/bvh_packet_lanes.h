@@ -4,8 +4,8 @@
 // of a PacketRays, and the closest hit per lane kept as (t, triangle index), so that the order
 // in which triangles are tested never changes an answer.
 
-#include "bvh.h"
-#include "bvh_packet_setup.h"
+#include "bvh/bvh.h"
+#include "bvh/traverse/bvh_packet_setup.h"
 #include "triangle_intersection.h"
 
 namespace raylab::packet_lanes {

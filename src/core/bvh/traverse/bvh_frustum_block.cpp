@@ -1,8 +1,8 @@
 // A block's packets traced through one frustum's candidates, or one by one when it does not fit
 // (bvh_frustum.h).
 
-#include "bvh_frustum.h"
-#include "bvh_packet.h"
+#include "bvh/bvh_frustum.h"
+#include "bvh/bvh_packet.h"
 
 namespace raylab {
 

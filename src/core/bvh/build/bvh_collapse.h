@@ -1,8 +1,8 @@
 #pragma once
 // Collapses the binary BVH into the 8-wide form of bvh_wide.h (internal to core).
 
-#include "bvh.h"
-#include "bvh_build_team.h"
+#include "bvh/build/bvh_build_team.h"
+#include "bvh/bvh.h"
 
 #include <cstdint>
 #include <vector>

@@ -12,7 +12,7 @@
 // packet traversal's own triangle test and (t, triangle index) rule, so each lane's answer is
 // closestHit8's or anyHit8's bit for bit.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "camera.h"
 #include "ray_packet.h"
 

@@ -4,11 +4,11 @@
 // its children overlap much, the best spatial split (bvh_spatial_split.h), within a budget of
 // extra references.
 
-#include "bvh.h"
-#include "bvh_binning.h"
-#include "bvh_build_object_split.h"
-#include "bvh_build_team.h"
-#include "bvh_spatial_split.h"
+#include "bvh/build/bvh_binning.h"
+#include "bvh/build/bvh_build_object_split.h"
+#include "bvh/build/bvh_build_team.h"
+#include "bvh/build/bvh_spatial_split.h"
+#include "bvh/bvh.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,8 +1,8 @@
 // The frustums that need no AVX2 of their own: a block's camera pyramid from the camera's basis
 // (frustumOfImageRect), and the tolerance every pyramid is pushed out by (bvh_frustum.h).
 
-#include "bvh_frustum.h"
-#include "bvh_packet.h"
+#include "bvh/bvh_frustum.h"
+#include "bvh/bvh_packet.h"
 #include "finite.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // The AVX2 packet traversal of the 8-wide BVH (internal to core). Callers check
 // bvh.wideNodes is not empty.
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "ray_packet.h"
 
 namespace raylab {

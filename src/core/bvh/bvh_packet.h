@@ -4,7 +4,7 @@
 // all of them. Every answer is exactly the single-ray one: lane i's hit is closestHit(bvh, ray i)
 // bit for bit (t, u, v, triangle), its any-hit answer is anyHit(bvh, ray i).
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "ray_packet.h"
 
 namespace raylab {

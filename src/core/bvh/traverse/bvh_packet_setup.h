@@ -6,8 +6,8 @@
 // trace together are the valid ones (WatertightRay's test) sharing the
 // most common ray permutation; the other lanes keep whatever they hold and are never read back.
 
-#include "bvh_box_ray.h"
-#include "bvh_wide.h"
+#include "bvh/bvh_wide.h"
+#include "bvh/traverse/bvh_box_ray.h"
 #include "ray_packet.h"
 #include "watertight_avx2.h"
 

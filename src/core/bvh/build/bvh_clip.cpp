@@ -1,6 +1,6 @@
-#include "bvh_clip.h"
+#include "bvh/build/bvh_clip.h"
 
-#include "bvh_build_clip.h"
+#include "bvh/build/bvh_build_clip.h"
 
 namespace raylab {
 

@@ -8,7 +8,7 @@
 // their own arrays and appended in a fixed order (top first, then each subtree's nodes and
 // blocks), so the result is the same whatever the thread count.
 
-#include "bvh_collapse.h"
+#include "bvh/build/bvh_collapse.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "bvh_presplit.h"
+#include "bvh/build/bvh_presplit.h"
 
-#include "bvh_clip.h"
+#include "bvh/build/bvh_clip.h"
 
 #include <algorithm>
 #include <cmath>

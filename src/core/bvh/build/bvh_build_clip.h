@@ -1,7 +1,7 @@
 #pragma once
 // splitBox (bvh_clip.h) on SSE registers, for the build's inner loops (internal to core).
 
-#include "bvh_binning.h"
+#include "bvh/build/bvh_binning.h"
 #include "scene.h"
 
 namespace raylab {

@@ -1,7 +1,7 @@
 // The top of the tree (SubtreeBuilder::buildTop): one node at a time, each node's references
 // binned and distributed to its children by chunks on the whole team.
 
-#include "bvh_build_subtree.h"
+#include "bvh/build/bvh_build_subtree.h"
 
 #include <algorithm>
 

@@ -9,13 +9,13 @@
 // t, u and v are bit for bit those of the scalar test. Lanes where an edge function is exactly
 // zero, where the scalar test switches to double precision, go to intersectTriangle itself.
 
-#include "bvh_wide_traverse.h"
+#include "bvh/traverse/bvh_wide_traverse.h"
 #include "finite.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 
-#include "bvh_box_ray.h"
-#include "bvh_collapse.h"
+#include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_box_ray.h"
 #include "watertight_avx2.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // The AVX2 traversal of the 8-wide BVH (internal to core). Callers check bvh.wideNodes is not
 // empty (it is only built on CPUs with AVX2).
 
-#include "bvh.h"
+#include "bvh/bvh.h"
 #include "triangle_intersection.h"
 
 namespace raylab {

@@ -2,9 +2,9 @@
 // the lanes the packet traversal leaves out (rays whose watertight permutation differs from the
 // packet's).
 
-#include "bvh_packet.h"
+#include "bvh/bvh_packet.h"
 
-#include "bvh_packet_traverse.h"
+#include "bvh/traverse/bvh_packet_traverse.h"
 
 namespace raylab {
 

@@ -8,12 +8,12 @@
 // leaves in depth-first order, and assembled in a fixed order, so the result is the same
 // whatever the thread count.
 
-#include "bvh.h"
-#include "bvh_binning.h"
-#include "bvh_build_subtree.h"
-#include "bvh_build_team.h"
-#include "bvh_collapse.h"
-#include "bvh_presplit.h"
+#include "bvh/build/bvh_binning.h"
+#include "bvh/build/bvh_build_subtree.h"
+#include "bvh/build/bvh_build_team.h"
+#include "bvh/build/bvh_collapse.h"
+#include "bvh/build/bvh_presplit.h"
+#include "bvh/bvh.h"
 #include "render/parallel_tiles.h"
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // Scalar traversal of the binary BVH (the reference), and the dispatch to the SIMD traversal.
 
-#include "bvh.h"
-#include "bvh_box_ray.h"
-#include "bvh_wide_traverse.h"
+#include "bvh/bvh.h"
+#include "bvh/traverse/bvh_box_ray.h"
+#include "bvh/traverse/bvh_wide_traverse.h"
 #include "triangle_intersection.h"
 
 namespace raylab {

@@ -1,4 +1,4 @@
-#include "bvh_build_object_split.h"
+#include "bvh/build/bvh_build_object_split.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "bvh_build_subtree.h"
+#include "bvh/build/bvh_build_subtree.h"
 
 #include <algorithm>
 

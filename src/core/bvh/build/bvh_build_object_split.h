@@ -3,7 +3,7 @@
 // bins of the centroids, found from the bins (bvh_binning.h), and the partition of references
 // by it.
 
-#include "bvh_binning.h"
+#include "bvh/build/bvh_binning.h"
 
 #include <cstdint>
 

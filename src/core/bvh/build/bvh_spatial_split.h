@@ -9,7 +9,7 @@
 // are the same wherever the triangle is found.
 
 #include "aabb.h"
-#include "bvh_binning.h"
+#include "bvh/build/bvh_binning.h"
 #include "scene.h"
 
 #include <cstdint>

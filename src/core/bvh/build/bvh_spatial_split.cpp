@@ -1,7 +1,7 @@
-#include "bvh_spatial_split.h"
+#include "bvh/build/bvh_spatial_split.h"
 
-#include "bvh_build_clip.h"
-#include "bvh_clip.h"
+#include "bvh/build/bvh_build_clip.h"
+#include "bvh/build/bvh_clip.h"
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
 // count and their material indices): rebuild it whenever they change. It holds no material's
 // colour, so materials may change without a rebuild.
 
-#include "bvh_wide.h"
+#include "bvh/bvh_wide.h"
 #include "ray.h"
 #include "scene.h"
 
