@@ -119,24 +119,6 @@ int run(int argc, char** argv) {
     }
     raylab::RenderSettings& settings = cl.settings;
 
-    const auto buildStart = Clock::now();
-    raylab::BvhBuildOptions bvhOptions;
-    bvhOptions.threads = settings.threads;
-    const raylab::Bvh bvh = raylab::buildBvh(scene, bvhOptions);
-    const auto start = Clock::now();
-    const double buildSeconds = std::chrono::duration<double>(start - buildStart).count();
-
-    const raylab::EmitterTable emitters = raylab::buildEmitterTable(scene);
-    if (cl.inspect) {
-        const raylab::PixelInspection inspection =
-            raylab::inspectPixel(scene, bvh, emitters, settings, cl.inspectX, cl.inspectY);
-        std::printf("%s\n", raylab::inspectionToJson(inspection).c_str());
-        std::fflush(stdout);
-        if (cl.output.empty()) {
-            return 0;
-        }
-    }
-
     // --reference: the converged picture the samples' error is measured against, read first so
     // that a bad file fails before the render.
     raylab::Framebuffer reference;
@@ -152,6 +134,24 @@ int run(int argc, char** argv) {
         }
     }
 
+    const auto buildStart = Clock::now();
+    raylab::BvhBuildOptions bvhOptions;
+    bvhOptions.threads = settings.threads;
+    const raylab::Bvh bvh = raylab::buildBvh(scene, bvhOptions);
+    const double buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
+
+    const raylab::EmitterTable emitters = raylab::buildEmitterTable(scene);
+    if (cl.inspect) {
+        const raylab::PixelInspection inspection =
+            raylab::inspectPixel(scene, bvh, emitters, settings, cl.inspectX, cl.inspectY);
+        std::printf("%s\n", raylab::inspectionToJson(inspection).c_str());
+        std::fflush(stdout);
+        if (cl.output.empty()) {
+            return 0;
+        }
+    }
+
+    const auto start = Clock::now();
     raylab::RayCounts counts;
     raylab::FilmLayers layers = raylab::filmLayersFor(settings);
     layers.moments = layers.moments || cl.targetError > 0.0f; // the noise estimate needs them
