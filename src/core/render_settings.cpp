@@ -2,7 +2,9 @@
 
 #include "finite.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <sstream>
 #include <utility>
 
@@ -82,6 +84,17 @@ std::string validate(const RenderSettings& s) {
         return "emission scale must be finite and >= 0, got " + text(s.emissionScale);
     }
     return {};
+}
+
+void splitColourIntensity(const glm::vec3& rgb, glm::vec3& colour, float& intensity) {
+    const float peak = std::max({rgb.x, rgb.y, rgb.z});
+    if (!(peak > 0.0f)) {
+        colour = glm::vec3(1.0f);
+        intensity = 0.0f;
+        return;
+    }
+    colour = glm::min(rgb / peak, glm::vec3(1.0f));
+    intensity = peak;
 }
 
 bool sameSamples(const RenderSettings& a, const RenderSettings& b) {

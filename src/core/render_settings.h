@@ -92,6 +92,11 @@ inline constexpr int kMaxSamplesPerPixel = 1 << 16;
 inline constexpr int kMaxThreads = 1024;
 inline constexpr int kMaxBounces = 1024;
 
+// An RGB value as a colour and an intensity, the way the settings keep the light's power and the
+// indirect constant: intensity = the largest channel, colour = rgb / intensity (white with
+// intensity 0 for black). Every channel must be finite and >= 0.
+void splitColourIntensity(const glm::vec3& rgb, glm::vec3& colour, float& intensity);
+
 // True when two settings give the same samples, so that a film of one can go on accumulating
 // for the other: every field but the sample cap, the thread count and the display transform.
 // The one rule for when a progressive picture restarts.

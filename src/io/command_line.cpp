@@ -96,14 +96,7 @@ bool parsePower(const std::string& value, glm::vec3& color, float& intensity) {
     if (rgb.x < 0.0f || rgb.y < 0.0f || rgb.z < 0.0f) {
         return false;
     }
-    const float peak = std::max({rgb.x, rgb.y, rgb.z});
-    if (peak == 0.0f) {
-        color = glm::vec3(1.0f);
-        intensity = 0.0f;
-    } else {
-        color = glm::min(rgb / peak, glm::vec3(1.0f));
-        intensity = peak;
-    }
+    splitColourIntensity(rgb, color, intensity);
     return true;
 }
 

@@ -19,6 +19,7 @@ public:
     const float* data() const { return values_.data(); }
     int size() const { return static_cast<int>(values_.size()); }
     int offset() const { return static_cast<int>(next_); }
+    std::size_t count() const { return count_; } // values pushed, at most the capacity
     float latest() const {
         return count_ == 0 ? 0.0f : values_[(next_ + values_.size() - 1) % values_.size()];
     }

@@ -132,6 +132,7 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_F12: return Command::Screenshot;
     case GLFW_KEY_ESCAPE: return Command::Quit;
     case GLFW_KEY_F1: return Command::TogglePanel;
+    case GLFW_KEY_N: return Command::UseMeanIndirect;
     default: return std::nullopt;
     }
 }

@@ -19,7 +19,7 @@ struct GLFWwindow;
 
 namespace raylab::viewer {
 
-enum class Command { Screenshot, Quit, TogglePanel };
+enum class Command { Screenshot, Quit, TogglePanel, UseMeanIndirect };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost
 // the focus (every key counts as up then).

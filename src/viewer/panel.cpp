@@ -41,6 +41,55 @@ void lightSection(RenderSettings& edit, const PanelView& view) {
     ImGui::DragFloat("power (W)", &edit.light.intensity,
                      0.01f * std::max(edit.light.intensity, 1.0f), 0.0f, FLT_MAX, "%.3f",
                      ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("radius", &edit.light.radius, 0.01f * view.step, 0.0f, FLT_MAX,
+                     edit.light.radius == 0.0f ? "0 (a point)" : "%.4f");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("a sphere of the same power: soft shadows (0 is the lab's point light)");
+    }
+    if (view.hasEmitters) {
+        ImGui::DragFloat("emitters x", &edit.emissionScale, 0.01f, 0.0f, FLT_MAX, "%.3f");
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("scales the emission of the scene's emitting triangles");
+        }
+    }
+}
+
+// The integrator, its bounces and sampler, and "the lab's N for this scene": the path-traced
+// picture's mean N beside the constant, and a button (or N) that makes it the constant.
+void lightTransportSection(RenderSettings& edit, const PanelView& view, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Light transport", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
+    const float half = halfWidth();
+    int integrator = edit.integrator == Integrator::Lab ? 0 : 1;
+    ImGui::SetNextItemWidth(half);
+    if (ImGui::Combo("##integrator", &integrator, "lab: constant N\0path traced N\0")) {
+        edit.integrator = integrator == 0 ? Integrator::Lab : Integrator::Path;
+    }
+    ImGui::SameLine(0.0f, inner);
+    int sampler = edit.sampler == SamplerKind::Sobol ? 0 : 1;
+    ImGui::SetNextItemWidth(half);
+    if (ImGui::Combo("integrator", &sampler, "Sobol\0independent\0")) {
+        edit.sampler = sampler == 0 ? SamplerKind::Sobol : SamplerKind::Independent;
+    }
+    ImGui::BeginDisabled(edit.integrator != Integrator::Path);
+    ImGui::InputInt("max bounces", &edit.maxBounces);
+    const PictureFacts* picture = view.numbers ? &view.numbers->picture : nullptr;
+    if (picture && picture->pathTraced && picture->samples > 0) {
+        const glm::vec3 n = picture->meanIndirect;
+        const glm::vec3 lab = edit.indirect3();
+        ImGui::Text("mean N %.3f %.3f %.3f", static_cast<double>(n.x), static_cast<double>(n.y),
+                    static_cast<double>(n.z));
+        ImGui::Text("lab's N %.3f %.3f %.3f", static_cast<double>(lab.x),
+                    static_cast<double>(lab.y), static_cast<double>(lab.z));
+    } else {
+        ImGui::TextDisabled("mean N: when a path-traced picture is shown");
+    }
+    if (ImGui::Button("Use the mean N as the lab's N (N)")) {
+        actions.useMeanIndirect = true;
+    }
+    ImGui::EndDisabled();
 }
 
 void indirectAndShadowSection(RenderSettings& edit, const PanelView& view) {
@@ -155,7 +204,18 @@ void statisticsSection(const PanelView& view) {
     if (const PictureFacts& p = n.picture; p.width > 0) {
         ImGui::Text("%d x %d, %d samples%s, %zu triangles", p.width, p.height, p.samples,
                     p.preview ? " (preview)" : (p.final ? " (cap)" : ""), view.triangles);
-        ImGui::Text("pass %.1f ms, %.2f Mrays/s", p.passMs, p.raysPerSecond * 1e-6);
+        ImGui::Text("pass %.1f ms, %.2f Mrays/s, %.2f Msamples/s", p.passMs, p.raysPerSecond * 1e-6,
+                    p.samplesPerSecond * 1e-6);
+        if (p.noisePercent >= 0.0) {
+            ImGui::Text("noise %.2f%% (relative standard error)", p.noisePercent);
+        }
+    }
+    if (n.noisePercent.count() > 0) {
+        ImGui::PlotLines("##noise", n.noisePercent.data(), n.noisePercent.size(),
+                         n.noisePercent.offset(), "noise %", 0.0f, FLT_MAX,
+                         ImVec2(ImGui::CalcItemWidth(), 32.0f));
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextUnformatted("noise");
     }
     const float half = halfWidth();
     ImGui::PlotLines("##pass", n.passMs.data(), n.passMs.size(), n.passMs.offset(), "pass ms", 0.0f,
@@ -215,6 +275,7 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
     statisticsSection(view);
     RenderSettings edit = state.settings;
     lightSection(edit, view);
+    lightTransportSection(edit, view, actions);
     indirectAndShadowSection(edit, view);
     cameraSection(edit, view, actions);
     displaySection(edit, state);

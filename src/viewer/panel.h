@@ -1,5 +1,6 @@
 #pragma once
-// The Dear ImGui panel: light, indirect term and shadows, camera, display, statistics and scene.
+// The Dear ImGui panel: light, light transport (integrator, bounces, the lab's N against the
+// computed one), indirect term and shadows, camera, display, statistics and scene.
 // It sits at a fixed place (kPanelX, kPanelY), with the screenshot button first, so scripts can
 // click it. Widgets edit a copy of the settings that is accepted only when valid (settings_edit.h).
 
@@ -29,9 +30,10 @@ struct PanelState {
 struct PanelView {
     std::string sceneName;
     std::size_t triangles = 0;
-    bool loading = false;    // a scene is being loaded in the background
-    float step = 0.1f;       // navigationStep of the scene: drag speeds
-    float maxEpsilon = 0.1f; // the right end of the epsilon slider
+    bool loading = false;     // a scene is being loaded in the background
+    float step = 0.1f;        // navigationStep of the scene: drag speeds
+    float maxEpsilon = 0.1f;  // the right end of the epsilon slider
+    bool hasEmitters = false; // the scene has emitting triangles (their scale is shown)
     // The statistics shown: a copy refreshed a few times a second (PanelNumbersRefresh), so that
     // an untouched panel draws the same pixels from frame to frame. Null: none shown.
     const PanelNumbers* numbers = nullptr;
@@ -41,7 +43,8 @@ struct PanelActions {
     bool screenshot = false;
     bool frameScene = false;
     bool resetToLab = false;
-    bool openScene = false; // load PanelState::scenePath
+    bool openScene = false;       // load PanelState::scenePath
+    bool useMeanIndirect = false; // set the lab's N to the path-traced picture's mean N
 };
 
 // Draws the panel for this ImGui frame.

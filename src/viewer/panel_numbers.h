@@ -8,6 +8,7 @@
 #include "history.h"
 
 #include <chrono>
+#include <glm/vec3.hpp>
 #include <optional>
 
 namespace raylab::viewer {
@@ -21,17 +22,22 @@ struct PictureFacts {
     int height = 0;
     int samples = 0; // samples per pixel accumulated (0 for a preview)
     bool preview = false;
-    bool final = false;         // the sample cap was reached
-    double passMs = 0.0;        // wall clock of the pass that produced the picture
-    double raysPerSecond = 0.0; // of that pass
+    bool final = false;            // the sample cap was reached
+    double passMs = 0.0;           // wall clock of the pass that produced the picture
+    double raysPerSecond = 0.0;    // of that pass
+    double samplesPerSecond = 0.0; // pixel samples of that pass per second (0 for a preview)
+    double noisePercent = -1.0;    // the film's estimated relative error in %; < 0: unknown
+    bool pathTraced = false;       // made by the path integrator (meanIndirect holds its N)
+    glm::vec3 meanIndirect{0.0f};  // the image's mean path-traced N per channel
     bool operator==(const PictureFacts&) const = default;
 };
 
 struct PanelNumbers {
-    History frameMs{kHistoryLength}; // intervals between frames drawn (ms)
-    History drawMs{kHistoryLength};  // the UI thread's time to draw a frame (ms)
-    History passMs{kHistoryLength};  // render pass times (ms)
-    double uploadMs = 0.0;           // the last picture's upload
+    History frameMs{kHistoryLength};      // intervals between frames drawn (ms)
+    History drawMs{kHistoryLength};       // the UI thread's time to draw a frame (ms)
+    History passMs{kHistoryLength};       // render pass times (ms)
+    History noisePercent{kHistoryLength}; // the estimated error of each new full picture (%)
+    double uploadMs = 0.0;                // the last picture's upload
     PictureFacts picture;
 };
 

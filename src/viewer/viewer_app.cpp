@@ -109,7 +109,7 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 // ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferHeight, HeldKeys& held, MouseDrag& drag, PanelState& panel,
-                bool& showPanel, int& screenshots, bool& quit) {
+                bool& showPanel, int& screenshots, bool& meanIndirectWanted, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -119,7 +119,11 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 ++screenshots;
             } else if (*command == Command::TogglePanel) {
                 showPanel = !showPanel;
-            } else if (!io.WantCaptureKeyboard) {
+            } else if (io.WantCaptureKeyboard) {
+                // typed into the panel
+            } else if (*command == Command::UseMeanIndirect) {
+                meanIndirectWanted = true;
+            } else {
                 quit = true;
             }
         }
@@ -130,6 +134,40 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
     applyDrag(window, drag, events.leftPressed && !io.WantCaptureMouse, framebufferHeight, next);
     std::string ignored;
     acceptEdit(next, panel.settings, ignored);
+}
+
+// What the panel says about a picture of the tracer.
+PictureFacts pictureFacts(const ShownImage& shown) {
+    PictureFacts facts;
+    facts.width = shown.bgra.width;
+    facts.height = shown.bgra.height;
+    facts.samples = shown.preview ? 0 : shown.settings.samplesPerPixel;
+    facts.preview = shown.preview;
+    facts.final = shown.final;
+    facts.passMs = shown.passSeconds * 1000.0;
+    facts.raysPerSecond = shown.raysPerSecond;
+    if (!shown.preview && shown.passSeconds > 0.0) {
+        facts.samplesPerSecond = static_cast<double>(shown.bgra.width) *
+                                 static_cast<double>(shown.bgra.height) / shown.passSeconds;
+    }
+    facts.noisePercent = shown.noise.known ? 100.0 * shown.noise.relativeError : -1.0;
+    facts.pathTraced = !shown.preview && shown.settings.integrator == Integrator::Path &&
+                       shown.settings.view == View::Beauty;
+    facts.meanIndirect = facts.pathTraced ? shown.meanIndirect : glm::vec3(0.0f);
+    return facts;
+}
+
+// "The lab's N for this scene": the constant indirect term set to the path-traced picture's mean
+// N, which a person can then compare with the computed light. False when no such mean is known.
+bool useMeanIndirect(const PictureFacts& picture, RenderSettings& settings) {
+    if (!picture.pathTraced || picture.samples == 0) {
+        return false;
+    }
+    RenderSettings next = settings;
+    next.indirect = true;
+    splitColourIntensity(picture.meanIndirect, next.indirectColor, next.indirectIntensity);
+    std::string ignored;
+    return acceptEdit(next, settings, ignored);
 }
 
 void setStatus(PanelState& panel, const std::string& text, bool isError) {
@@ -313,17 +351,15 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 numbers.passMs.push(static_cast<float>(shown.passSeconds * 1000.0));
             }
             numbers.uploadMs = quad.lastUploadSeconds() * 1000.0;
-            numbers.picture = {shown.bgra.width,
-                               shown.bgra.height,
-                               shown.preview ? 0 : shown.settings.samplesPerPixel,
-                               shown.preview,
-                               shown.final,
-                               shown.passSeconds * 1000.0,
-                               shown.raysPerSecond};
+            numbers.picture = pictureFacts(shown);
+            if (numbers.picture.noisePercent >= 0.0) {
+                numbers.noisePercent.push(static_cast<float>(numbers.picture.noisePercent));
+            }
             pictureToUpload = false;
         }
+        bool meanIndirectWanted = false;
         applyInput(input.take(), wokeAt, window.handle(), step, fbHeight, held, drag, panel,
-                   showPanel, screenshots, quit);
+                   showPanel, screenshots, meanIndirectWanted, quit);
         if (showPanel) {
             panelNumbers.update(numbers, wokeAt);
             PanelView view;
@@ -333,6 +369,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             view.step = step;
             view.maxEpsilon = maxEpsilon;
             view.numbers = &panelNumbers.shown();
+            view.hasEmitters = !scene->emitters.empty();
             // The panel draws a copy of the settings (panel_settings_refresh.h); edits, made
             // only while it is in use, when the copy is the live settings, count.
             const ImGuiIO& io = ImGui::GetIO();
@@ -355,6 +392,19 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             }
             if (actions.openScene && !loader.start(panel.scenePath)) {
                 setStatus(panel, "a scene is loading already", true);
+            }
+            meanIndirectWanted = meanIndirectWanted || actions.useMeanIndirect;
+        }
+        if (meanIndirectWanted) {
+            if (useMeanIndirect(numbers.picture, panel.settings)) {
+                const glm::vec3 n = panel.settings.indirect3();
+                char text[96];
+                std::snprintf(
+                    text, sizeof text, "the lab's N set to the mean path-traced N, %.3f %.3f %.3f",
+                    static_cast<double>(n.x), static_cast<double>(n.y), static_cast<double>(n.z));
+                setStatus(panel, text, false);
+            } else {
+                setStatus(panel, "no path-traced picture yet: its mean N is not known", true);
             }
         }
 
