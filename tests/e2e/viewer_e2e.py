@@ -23,6 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_panel import test_panel  # noqa: E402
+from e2e_path import test_mean_n  # noqa: E402
 from e2e_scene_path import test_scene_path  # noqa: E402
 from e2e_stats import test_idle, test_stats  # noqa: E402
 from e2e_support import (PANEL_BUTTON, Env, Failure, Viewer, check, close,  # noqa: E402
@@ -74,6 +75,8 @@ def test_screenshot_matches_render(env):
         ["--width", "200", "--height", "160", "--spp", "1", "--yaw", "12", "--pitch", "-5",
          "--light-pos", "0.3,0.6,-0.5", "--light-power", "20,14,10", "--display", "srgb",
          "--exposure", "0.5", "--shadow-eps", "0"],
+        ["--width", "160", "--height", "120", "--spp", "6", "--integrator", "path",
+         "--light-radius", "0.1", "--max-bounces", "3"],
     ]
     for n, flags in enumerate(cases):
         shot, again, from_json = f"a{n}.png", f"b{n}.png", f"c{n}.png"
@@ -303,6 +306,7 @@ TESTS = {
     "stats": (test_stats, True),
     "idle": (test_idle, True),
     "panel": (test_panel, True),
+    "mean_n": (test_mean_n, True),
 }
 
 
