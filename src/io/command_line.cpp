@@ -349,6 +349,17 @@ const std::vector<Option>& options() {
              s.out.inspectY = y;
              return {};
          }},
+        {"--split", "D", kViewer,
+         "start with the A/B split: left this integrator, right the other, the divider at D "
+         "(0..1)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             float d = 0.0f;
+             if (!parseFloat(v, d) || d < 0.0f || d > 1.0f) {
+                 return expected("a divider position in [0, 1]", v);
+             }
+             s.out.split = d;
+             return {};
+         }},
         {"--frames", "N", kViewer, "quit after N frames (0 = run until closed)",
          intIn(0, 1 << 30, &CommandLine::frames)},
         {"--frames", "N", kBench, "best of N timed frames (default 5)",

@@ -50,6 +50,7 @@ struct CommandLine {
     int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
     std::string screenshot;          // --screenshot FILE: save the last shown frame
     std::string screenshotDir = "."; // --screenshot-dir DIR
+    float split = -1.0f; // --split D: start with the A/B split, its divider at D in [0, 1]; < 0 off
     // bench
     bool json = false;   // --json
     int benchFrames = 5; // --frames N for the bench: best of N

@@ -126,6 +126,10 @@ public:
                               {"sampler", samplerKind(&work_.sampler)}});
             } else if (key == "emission") {
                 ok = section(key, value, {{"scale", number(&work_.emissionScale)}});
+            } else if (key == "split") {
+                if (!readSplit(value)) {
+                    return false;
+                }
             } else if (key == "scene") {
                 if (!value.is_string() || value.get<std::string>().empty()) {
                     return fail(key, "must be a non-empty string, got " + shown(value));
@@ -143,6 +147,38 @@ public:
     }
 
     const RenderSettings& result() const { return work_; }
+
+    // "split": {"divider": number in [0, 1], "side": "left" | "right", "other": file name}.
+    bool readSplit(const Json& value) {
+        if (!value.is_object()) {
+            return fail("split", "must be an object, got " + shown(value));
+        }
+        SplitRecord split;
+        for (const auto& [key, child] : value.items()) {
+            if (key == "divider") {
+                if (std::string why = asFloat(child, split.divider);
+                    !why.empty() || split.divider < 0.0f || split.divider > 1.0f) {
+                    return fail("split.divider", "must be a number in [0, 1], got " + shown(child));
+                }
+            } else if (key == "side") {
+                if (!child.is_string() ||
+                    (child.get<std::string>() != "left" && child.get<std::string>() != "right")) {
+                    return fail("split.side", "must be \"left\" or \"right\", got " + shown(child));
+                }
+                split.side = child.get<std::string>();
+            } else if (key == "other") {
+                if (!child.is_string() || child.get<std::string>().empty()) {
+                    return fail("split.other", "must be a file name, got " + shown(child));
+                }
+                split.other = child.get<std::string>();
+            } else {
+                return fail("split." + key, "unknown key");
+            }
+        }
+        extras_.split = split;
+        extras_.keys.insert("split");
+        return true;
+    }
 
 private:
     // Parses value into its field; returns an empty string or what is wrong with the value.
@@ -323,6 +359,17 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
     return j.dump(2) + "\n";
 }
 
+std::string settingsToJson(const RenderSettings& settings, const std::string& scene,
+                           const SplitRecord& split) {
+    OrderedJson j = toJson(settings);
+    if (!scene.empty()) {
+        j["scene"] = scene;
+    }
+    j["split"] = {
+        {"divider", shortFloat(split.divider)}, {"side", split.side}, {"other", split.other}};
+    return j.dump(2) + "\n";
+}
+
 bool settingsFromJson(const std::string& text, RenderSettings& settings, SettingsJsonExtras& extras,
                       std::string& error) {
     Json root;
@@ -384,6 +431,17 @@ bool loadSettingsFile(const std::string& path, RenderSettings& settings, std::st
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
                       const std::string& scene, std::string& error) {
     const std::string text = settingsToJson(settings, scene);
+    return writeFileAtomically(
+        path,
+        [&text](std::FILE* file, std::string&) {
+            return std::fwrite(text.data(), 1, text.size(), file) == text.size();
+        },
+        error);
+}
+
+bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
+                      const std::string& scene, const SplitRecord& split, std::string& error) {
+    const std::string text = settingsToJson(settings, scene, split);
     return writeFileAtomically(
         path,
         [&text](std::FILE* file, std::string&) {

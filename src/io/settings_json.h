@@ -10,12 +10,17 @@
 //    "image":    {"width": 500, "height": 500, "samples": 1},
 //    "threads":  0,
 //    "display":  {"mode": "lab", "exposure": 0},
-//    "scene":    "cornell"}                       <- optional; only written when asked for
+//    "scene":    "cornell",                       <- optional; only written when asked for
+//    "split":    {"divider": 0.5, "side": "left", "other": "raylab-0001-right.json"}}
+//                 <- optional: a screenshot of one side of the viewer's A/B split; these are that
+//                    side's settings, `other` names the file of the other side's
+// (also "integrator", "emission", a light's "radius" and the display's "view": see toJson).
 // Floats are written in the shortest form that reads back to the same float, so a save and a load
 // reproduce the settings bit for bit.
 
 #include "core/render_settings.h"
 
+#include <optional>
 #include <set>
 #include <string>
 
@@ -26,10 +31,20 @@ std::string settingsToJson(const RenderSettings& settings);
 // and --save-settings.
 std::string settingsToJson(const RenderSettings& settings, const std::string& scene);
 
+// Which side of a split picture a settings file describes.
+struct SplitRecord {
+    float divider = 0.5f; // the fraction of the width the left side showed
+    std::string side;     // "left" or "right"
+    std::string other;    // the file of the other side's settings (a name beside this one);
+                          // empty (not written) where it is not known, as in a PNG's chunk
+    bool operator==(const SplitRecord&) const = default;
+};
+
 // What a JSON text held besides the values.
 struct SettingsJsonExtras {
-    std::set<std::string> keys; // the leaf keys it gave, e.g. "camera.position", "threads"
-    std::string scene;          // its "scene", or empty
+    std::set<std::string> keys;       // the leaf keys it gave, e.g. "camera.position", "threads"
+    std::string scene;                // its "scene", or empty
+    std::optional<SplitRecord> split; // its "split", if any
 };
 
 // Reads JSON text over settings. Returns false with a one-line error naming the key, leaving
@@ -46,5 +61,10 @@ bool loadSettingsFile(const std::string& path, RenderSettings& settings, Setting
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings, std::string& error);
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
                       const std::string& scene, std::string& error);
+// The same with a "split" record (an empty scene writes no "scene" key).
+std::string settingsToJson(const RenderSettings& settings, const std::string& scene,
+                           const SplitRecord& split);
+bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
+                      const std::string& scene, const SplitRecord& split, std::string& error);
 
 } // namespace raylab

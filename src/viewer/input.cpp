@@ -1,5 +1,9 @@
 #include "input.h"
 
+#include "split_view.h"
+
+#include <algorithm>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -133,8 +137,25 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_ESCAPE: return Command::Quit;
     case GLFW_KEY_F1: return Command::TogglePanel;
     case GLFW_KEY_N: return Command::UseMeanIndirect;
+    case GLFW_KEY_B: return Command::ToggleSplit;
     default: return std::nullopt;
     }
+}
+
+bool DividerDrag::update(GLFWwindow* window, bool start, int framebufferWidth, float& divider) {
+    if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS && !start) {
+        dragging_ = false;
+        return false;
+    }
+    double x = 0.0, y = 0.0;
+    cursorInPixels(window, x, y);
+    if (start) {
+        dragging_ = grabsDivider(x, framebufferWidth, divider);
+    }
+    if (dragging_ && framebufferWidth > 0) {
+        divider = std::clamp(static_cast<float>(x / framebufferWidth), 0.0f, 1.0f);
+    }
+    return dragging_;
 }
 
 void MouseDrag::update(GLFWwindow* window, bool start, float degreesPerPixel, float& yaw,

@@ -19,7 +19,7 @@ struct GLFWwindow;
 
 namespace raylab::viewer {
 
-enum class Command { Screenshot, Quit, TogglePanel, UseMeanIndirect };
+enum class Command { Screenshot, Quit, TogglePanel, UseMeanIndirect, ToggleSplit };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost
 // the focus (every key counts as up then).
@@ -74,6 +74,18 @@ std::optional<Command> commandForKey(int glfwKey);
 
 // The mouse drag that turns the camera: while the left button, pressed outside the panel, is
 // held, the point under the cursor follows the cursor (a drag to the right turns the camera left).
+// The split's divider under the mouse: a press that grabs it (grabsDivider) moves it with the
+// cursor until the button is released, instead of turning the camera.
+class DividerDrag {
+public:
+    // `start`: a press outside the panel happened now. Updates `divider` while dragging and
+    // returns whether a divider drag is under way (then the press is not the camera's).
+    bool update(GLFWwindow* window, bool start, int framebufferWidth, float& divider);
+
+private:
+    bool dragging_ = false;
+};
+
 class MouseDrag {
 public:
     // Returns the yaw and pitch (degrees) to apply this frame. `start` is whether a press

@@ -56,7 +56,8 @@ void lightSection(RenderSettings& edit, const PanelView& view) {
 
 // The integrator, its bounces and sampler, and "the lab's N for this scene": the path-traced
 // picture's mean N beside the constant, and a button (or N) that makes it the constant.
-void lightTransportSection(RenderSettings& edit, const PanelView& view, PanelActions& actions) {
+void lightTransportSection(RenderSettings& edit, PanelState& state, const PanelView& view,
+                           PanelActions& actions) {
     if (!ImGui::CollapsingHeader("Light transport", ImGuiTreeNodeFlags_DefaultOpen)) {
         return;
     }
@@ -73,7 +74,12 @@ void lightTransportSection(RenderSettings& edit, const PanelView& view, PanelAct
     if (ImGui::Combo("integrator", &sampler, "Sobol\0independent\0")) {
         edit.sampler = sampler == 0 ? SamplerKind::Sobol : SamplerKind::Independent;
     }
-    ImGui::BeginDisabled(edit.integrator != Integrator::Path);
+    ImGui::Checkbox("A/B split (B): left this integrator, right the other", &state.split);
+    if (state.split) {
+        ImGui::SliderFloat("divider", &state.divider, 0.0f, 1.0f, "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp);
+    }
+    ImGui::BeginDisabled(edit.integrator != Integrator::Path && !state.split);
     ImGui::InputInt("max bounces", &edit.maxBounces);
     const PictureFacts* picture = view.numbers ? &view.numbers->picture : nullptr;
     if (picture && picture->pathTraced && picture->samples > 0) {
@@ -275,7 +281,7 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
     statisticsSection(view);
     RenderSettings edit = state.settings;
     lightSection(edit, view);
-    lightTransportSection(edit, view, actions);
+    lightTransportSection(edit, state, view, actions);
     indirectAndShadowSection(edit, view);
     cameraSection(edit, view, actions);
     displaySection(edit, state);

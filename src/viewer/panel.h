@@ -20,9 +20,13 @@ inline constexpr float kPanelWidth = 340.0f;
 struct PanelState {
     RenderSettings settings;      // the current settings, always valid
     float resolutionScale = 1.0f; // render resolution = framebuffer size * this, in [0.1, 1]
-    std::string scenePath;        // the path field
-    std::string refused;          // why the last edit was refused; empty when it was not
-    std::string status;           // the last screenshot or scene-load message
+    // The A/B split: left of the divider these settings, right of it the same with the other
+    // integrator (splitCompare, split_view.h); divider: the fraction of the width on the left.
+    bool split = false;
+    float divider = 0.5f;
+    std::string scenePath; // the path field
+    std::string refused;   // why the last edit was refused; empty when it was not
+    std::string status;    // the last screenshot or scene-load message
     bool statusIsError = false;
 };
 

@@ -14,6 +14,7 @@
 #include "core/render/display_transform.h"
 #include "core/render/film.h"
 #include "core/render/renderer.h"
+#include "split_view.h"
 
 namespace raylab::viewer {
 
@@ -78,11 +79,18 @@ double raysPerSecond(const RayCounts& counts, double seconds) {
 } // namespace
 
 bool samePicture(const RenderJob& a, const RenderJob& b) {
-    return a.scene == b.scene && sameSamples(a.settings, b.settings);
+    return a.scene == b.scene && sameSamples(a.settings, b.settings) &&
+           a.compare.has_value() == b.compare.has_value() &&
+           (!a.compare || sameSamples(*a.compare, *b.compare));
 }
 
 bool sameJob(const RenderJob& a, const RenderJob& b) {
-    return a.scene == b.scene && a.settings == b.settings;
+    return a.scene == b.scene && a.settings == b.settings && a.compare == b.compare &&
+           a.divider == b.divider;
+}
+
+const RenderSettings& sideSettings(const RenderJob& job, int side) {
+    return side == 1 && job.compare ? *job.compare : job.settings;
 }
 
 RenderWorker::RenderWorker(double previewBudgetSeconds, std::function<void()> onPicture)
@@ -129,17 +137,19 @@ bool RenderWorker::takeLatest(ShownImage& out) {
 
 void RenderWorker::run() {
     lowerThisThreadsPriority();
-    // The accumulation: `film` holds film.samples() samples per pixel of `job` (core restarts it
-    // when a pass is cancelled, and a restart costs nothing).
+    // The accumulation: one film per side of the picture (the second only for a split job), each
+    // holding film.samples() samples per pixel of its side's settings (core restarts a film when
+    // a pass is cancelled, and a restart costs nothing).
     RenderJob job;
     uint64_t takenSerial = 0;
-    Film film;
-    bool filmValid = false;
+    Film films[2];
+    std::vector<uint8_t> sideBgra[2]; // each side's display bytes, for a split picture
+    bool filmsValid = false;
     bool previewTried = false;
     double secondsPerPixel = 0.0; // measured by the last pass, 0 before any
     uint64_t published = 0;
     Film previewFilm;
-    std::vector<uint8_t> previewBgra;
+    std::vector<uint8_t> previewBgra[2];
     ShownImage staging;
 
     const auto publish = [&](ShownImage& picture) {
@@ -169,58 +179,87 @@ void RenderWorker::run() {
             (totals_.*which).add(seconds);
         }
     };
+    const auto sidesOf = [](const RenderJob& j) { return j.compare ? 2 : 1; };
+    // The side whose film gets the next pass: the one with fewer samples below its cap (the
+    // left on a tie), or -1 when every side has reached its cap.
+    const auto nextSide = [&](const RenderJob& j) {
+        int side = -1;
+        for (int i = 0; i < sidesOf(j); ++i) {
+            const uint32_t cap = static_cast<uint32_t>(sideSettings(j, i).samplesPerPixel);
+            if (films[i].samples() < cap &&
+                (side < 0 || films[i].samples() < films[side].samples())) {
+                side = i;
+            }
+        }
+        return side;
+    };
 
     for (;;) {
         uint64_t serial = 0;
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] {
-                return quit_ ||
-                       (job_.scene &&
-                        (jobSerial_ != takenSerial ||
-                         film.samples() < static_cast<uint32_t>(job_.settings.samplesPerPixel)));
+                return quit_ || (job_.scene &&
+                                 (jobSerial_ != takenSerial ||
+                                  (filmsValid && samePicture(job_, job) && nextSide(job_) >= 0)));
             });
             if (quit_) {
                 return;
             }
-            const bool restart =
-                !filmValid || !samePicture(job_, job) ||
-                static_cast<uint32_t>(job_.settings.samplesPerPixel) < film.samples();
+            bool restart = !filmsValid || !samePicture(job_, job);
+            for (int i = 0; i < sidesOf(job_) && !restart; ++i) {
+                restart = static_cast<uint32_t>(sideSettings(job_, i).samplesPerPixel) <
+                          films[i].samples();
+            }
             job = job_;
             serial = takenSerial = jobSerial_;
             cancel_.store(false);
             if (restart) {
-                film.reset(job.settings.width, job.settings.height, filmLayersFor(job.settings));
-                filmValid = true;
+                for (int i = 0; i < sidesOf(job); ++i) {
+                    const RenderSettings& side = sideSettings(job, i);
+                    films[i].reset(side.width, side.height, filmLayersFor(side));
+                }
+                filmsValid = true;
                 previewTried = false;
             }
-            const uint32_t samples = film.samples();
             // Decided with the job, under the same lock, so no submit slips in between. A pass
             // of unknown cost (none measured yet) counts as too long.
             const double expected = secondsPerPixel * static_cast<double>(pixelCount(job.settings));
-            inShortFirstPass_ =
-                samples == 0 && secondsPerPixel > 0.0 && expected <= previewBudgetSeconds_;
+            inShortFirstPass_ = films[0].samples() == 0 && secondsPerPixel > 0.0 &&
+                                expected <= previewBudgetSeconds_;
         }
         const RenderSettings& settings = job.settings;
         const LoadedScene& loaded = *job.scene;
+        const int sides = sidesOf(job);
         PassOptions pass;
         pass.cancel = &cancel_;
         pass.emitters = &loaded.emitters;
 
-        if (film.samples() == 0 && !previewTried) {
+        if (films[0].samples() == 0 && !previewTried) {
             previewTried = true;
             const int k = previewDivisor(
                 secondsPerPixel * static_cast<double>(pixelCount(settings)), previewBudgetSeconds_);
             if (k > 1) {
-                RenderSettings small = settings;
-                small.width = (settings.width + k - 1) / k;
-                small.height = (settings.height + k - 1) / k;
-                previewFilm.reset(small.width, small.height, filmLayersFor(small));
+                // Each side at 1/k resolution, enlarged by pixel replication.
                 RayCounts counts;
                 const auto start = Clock::now();
+                bool finished = true;
+                int smallWidth = 0;
+                int smallHeight = 0;
                 setInPreview(true);
-                const bool finished =
-                    renderPass(loaded.scene, loaded.bvh, small, previewFilm, &counts, pass);
+                for (int i = 0; i < sides && finished; ++i) {
+                    RenderSettings small = sideSettings(job, i);
+                    small.width = (settings.width + k - 1) / k;
+                    small.height = (settings.height + k - 1) / k;
+                    smallWidth = small.width;
+                    smallHeight = small.height;
+                    previewFilm.reset(small.width, small.height, filmLayersFor(small));
+                    finished =
+                        renderPass(loaded.scene, loaded.bvh, small, previewFilm, &counts, pass);
+                    previewBgra[i].resize(4 * pixelCount(small));
+                    previewFilm.toDisplay(previewBgra[i], small.display, small.exposure,
+                                          PixelOrder::Bgra);
+                }
                 setInPreview(false);
                 if (!finished) {
                     tally(&PassTotals::previews, -1.0);
@@ -228,20 +267,27 @@ void RenderWorker::run() {
                 }
                 const double seconds = secondsSince(start);
                 tally(&PassTotals::previews, seconds);
-                secondsPerPixel = seconds / static_cast<double>(pixelCount(small));
-                previewBgra.resize(4 * pixelCount(small));
-                previewFilm.toDisplay(previewBgra, settings.display, settings.exposure,
-                                      PixelOrder::Bgra);
-                enlarge(previewBgra, small.width, small.height, settings.width, settings.height,
+                secondsPerPixel = seconds / static_cast<double>(sides * smallWidth * smallHeight);
+                if (sides == 2) {
+                    composeSplit(previewBgra[0], previewBgra[1], smallWidth, smallHeight,
+                                 job.divider, previewBgra[0]);
+                }
+                enlarge(previewBgra[0], smallWidth, smallHeight, settings.width, settings.height,
                         staging.bgra);
                 staging.linear = Framebuffer();
-                staging.settings = small;
+                staging.settings = settings;
+                staging.settings.width = smallWidth;
+                staging.settings.height = smallHeight;
+                staging.compare.reset();
+                staging.divider = job.divider;
                 staging.scene = job.scene;
                 staging.jobSerial = serial;
                 staging.preview = true;
                 staging.final = false;
                 staging.passSeconds = seconds;
                 staging.raysPerSecond = raysPerSecond(counts, seconds);
+                staging.noise = NoiseEstimate();
+                staging.meanIndirect = glm::vec3(0.0f);
                 publish(staging);
                 continue;
             }
@@ -249,16 +295,18 @@ void RenderWorker::run() {
 
         double seconds = 0.0;
         RayCounts counts;
-        bool displayed = false; // staging.bgra already shows the sums
-        if (film.samples() < static_cast<uint32_t>(settings.samplesPerPixel)) {
-            // The pass writes the display bytes tile by tile, on the tracing threads.
-            staging.bgra.pixels.resize(4 * pixelCount(settings));
+        bool displayed = false; // the display bytes already show the films
+        if (const int side = nextSide(job); side >= 0) {
+            // The pass writes the display bytes tile by tile, on the tracing threads: straight
+            // into the picture for one side, into the side's own bytes for a split.
+            std::vector<uint8_t>& bytes = sides == 1 ? staging.bgra.pixels : sideBgra[side];
+            bytes.resize(4 * pixelCount(settings));
             PassOptions full = pass;
-            full.displayRgba = staging.bgra.pixels;
+            full.displayRgba = bytes;
             full.displayOrder = PixelOrder::Bgra;
             const auto start = Clock::now();
-            const bool complete =
-                renderPass(loaded.scene, loaded.bvh, settings, film, &counts, full);
+            const bool complete = renderPass(loaded.scene, loaded.bvh, sideSettings(job, side),
+                                             films[side], &counts, full);
             setInShortFirstPass(false);
             if (!complete) {
                 tally(&PassTotals::passes, -1.0);
@@ -267,30 +315,65 @@ void RenderWorker::run() {
             seconds = secondsSince(start);
             tally(&PassTotals::passes, seconds);
             secondsPerPixel = seconds / static_cast<double>(pixelCount(settings));
-            displayed = true;
+            displayed = sides == 1 || films[1 - side].samples() > 0;
+            if (sides == 2 && films[1 - side].samples() > 0) {
+                // The other side's bytes may be of another display transform: made again below
+                // only when nothing was traced for it with this job's.
+                const RenderSettings& other = sideSettings(job, 1 - side);
+                sideBgra[1 - side].resize(4 * pixelCount(settings));
+                films[1 - side].toDisplay(sideBgra[1 - side], other.display, other.exposure,
+                                          PixelOrder::Bgra);
+            }
         }
-        // A new pass, or a new job that keeps the samples (display, cap, threads): show it.
+        // A new pass, or a new job that keeps the samples (display, cap, threads, divider): show
+        // it.
         staging.bgra.width = settings.width;
         staging.bgra.height = settings.height;
-        if (!displayed) {
+        if (sides == 1 && !displayed) {
             staging.bgra.pixels.resize(4 * pixelCount(settings));
-            film.toDisplay(staging.bgra.pixels, settings.display, settings.exposure,
-                           PixelOrder::Bgra);
+            films[0].toDisplay(staging.bgra.pixels, settings.display, settings.exposure,
+                               PixelOrder::Bgra);
+        } else if (sides == 2) {
+            for (int i = 0; i < 2; ++i) {
+                const RenderSettings& side = sideSettings(job, i);
+                if (!displayed || films[i].samples() == 0) {
+                    sideBgra[i].resize(4 * pixelCount(settings));
+                    films[i].toDisplay(sideBgra[i], side.display, side.exposure, PixelOrder::Bgra);
+                }
+            }
+            staging.bgra.pixels.resize(4 * pixelCount(settings));
+            composeSplit(sideBgra[0], sideBgra[1], settings.width, settings.height, job.divider,
+                         staging.bgra.pixels);
         }
         if (job.keepLinear) {
-            film.mean(staging.linear);
+            films[0].mean(staging.linear);
+            if (sides == 2) {
+                Framebuffer right;
+                films[1].mean(right);
+                composeSplit(staging.linear, right, job.divider);
+            }
         } else {
             staging.linear = Framebuffer();
         }
-        const uint32_t samples = film.samples();
-        staging.noise = film.noise();
-        staging.meanIndirect = film.meanIndirect();
+        // The noise and the mean N of the path-traced side (the left one unless only the right
+        // side is path traced).
+        const int pathSide = sides == 2 && job.compare->integrator == Integrator::Path &&
+                                     job.settings.integrator != Integrator::Path
+                                 ? 1
+                                 : 0;
+        staging.noise = films[pathSide].noise();
+        staging.meanIndirect = films[pathSide].meanIndirect();
         staging.settings = settings;
-        staging.settings.samplesPerPixel = static_cast<int>(samples);
+        staging.settings.samplesPerPixel = static_cast<int>(films[0].samples());
+        staging.compare = job.compare;
+        if (staging.compare) {
+            staging.compare->samplesPerPixel = static_cast<int>(films[1].samples());
+        }
+        staging.divider = job.divider;
         staging.scene = job.scene;
         staging.jobSerial = serial;
         staging.preview = false;
-        staging.final = samples >= static_cast<uint32_t>(settings.samplesPerPixel);
+        staging.final = nextSide(job) < 0;
         staging.passSeconds = seconds;
         staging.raysPerSecond = raysPerSecond(counts, seconds);
         publish(staging);

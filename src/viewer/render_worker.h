@@ -26,6 +26,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace raylab::viewer {
@@ -36,13 +37,20 @@ struct RenderJob {
     // validate().
     RenderSettings settings;
     bool keepLinear = false; // also publish the linear picture (for PFM/EXR screenshots)
+    // A split picture: left of the divider `settings`, right of it `compare` (any other valid
+    // settings of the same size), each side converging on its own film; the worker alternates
+    // passes between them. divider: the fraction of the width shown from the left side.
+    std::optional<RenderSettings> compare{};
+    float divider = 0.5f;
 };
 
 // True when two jobs give the same accumulated samples: the same scene and sameSamples() settings
-// (display, exposure, cap and thread count do not change the samples).
+// on each side (display, exposure, cap, thread count and divider do not change the samples).
 bool samePicture(const RenderJob& a, const RenderJob& b);
 // True when every field of the two jobs is equal (keepLinear aside).
 bool sameJob(const RenderJob& a, const RenderJob& b);
+// The settings of side 0 (left, or the whole picture) or 1 (right of a split).
+const RenderSettings& sideSettings(const RenderJob& job, int side);
 
 // The UI frame budget under which a full pass needs no preview first: two frames at 60 Hz.
 inline constexpr double kPreviewBudgetSeconds = 1.0 / 30.0;

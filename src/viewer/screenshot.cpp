@@ -25,10 +25,48 @@ bool hasExtension(const std::string& path, const char* extension) {
     return ext == extension;
 }
 
-std::map<std::string, std::string> chunksFor(const ShownImage& shown) {
-    return {{kSettingsChunk, settingsToJson(shown.settings, sceneOf(shown))},
-            {kSceneChunk, sceneOf(shown)},
-            {"Software", "raylab"}};
+// `path` with "-right" before its extension and .json after (a.png -> a-right.json).
+std::string rightSettingsPathFor(const std::string& path) {
+    const std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + "-right.json")).string();
+}
+
+// The split records of a split picture whose image is at `path`: the left side's settings go to
+// the image's own .json (and its PNG chunk), the right side's to a -right.json beside it.
+SplitRecord leftRecord(const ShownImage& shown, const std::string& path) {
+    return {shown.divider, "left", std::filesystem::path(rightSettingsPathFor(path)).filename()};
+}
+SplitRecord rightRecord(const ShownImage& shown, const std::string& path) {
+    return {shown.divider, "right", std::filesystem::path(settingsPathFor(path)).filename()};
+}
+
+// `path` empty: the image's name is not known yet (the record names no other file).
+std::map<std::string, std::string> chunksFor(const ShownImage& shown, const std::string& path) {
+    SplitRecord record = leftRecord(shown, path.empty() ? "x.png" : path);
+    if (path.empty()) {
+        record.other.clear();
+    }
+    const std::string json = shown.compare ? settingsToJson(shown.settings, sceneOf(shown), record)
+                                           : settingsToJson(shown.settings, sceneOf(shown));
+    return {{kSettingsChunk, json}, {kSceneChunk, sceneOf(shown)}, {"Software", "raylab"}};
+}
+
+// The settings beside the image at `path`: its .json, and for a split picture the right side's
+// -right.json too. On failure removes what it wrote.
+bool saveSettingsFor(const std::string& path, const ShownImage& shown, std::string& error) {
+    const std::string json = settingsPathFor(path);
+    if (!shown.compare) {
+        return saveSettingsFile(json, shown.settings, sceneOf(shown), error);
+    }
+    if (!saveSettingsFile(json, shown.settings, sceneOf(shown), leftRecord(shown, path), error)) {
+        return false;
+    }
+    if (!saveSettingsFile(rightSettingsPathFor(path), *shown.compare, sceneOf(shown),
+                          rightRecord(shown, path), error)) {
+        std::remove(json.c_str());
+        return false;
+    }
+    return true;
 }
 
 constexpr int kMaxNumber = 9999;
@@ -41,7 +79,7 @@ std::string settingsPathFor(const std::string& path) {
 
 bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error) {
     if (hasExtension(path, ".png")) {
-        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown))) {
+        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown, path))) {
             return false;
         }
     } else if (shown.linear.pixels.empty()) {
@@ -51,7 +89,7 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
                            error)) {
         return false;
     }
-    if (!saveSettingsFile(settingsPathFor(path), shown.settings, sceneOf(shown), error)) {
+    if (!saveSettingsFor(path, shown, error)) {
         std::remove(path.c_str());
         return false;
     }
@@ -66,7 +104,8 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
     // name is free, atomically.
     const fs::path temporary =
         folder / (".raylab-screenshot-" + std::to_string(::getpid()) + ".png.tmp");
-    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown))) {
+    // The PNG's own name is not known yet: its chunk's split record names no other file.
+    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown, ""))) {
         return false;
     }
     bool claimed = false;
@@ -76,7 +115,8 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
         const fs::path png = folder / (std::string(name) + ".png");
         const fs::path json = folder / (std::string(name) + ".json");
         std::error_code ignored;
-        if (fs::exists(json, ignored)) {
+        if (fs::exists(json, ignored) ||
+            (shown.compare && fs::exists(rightSettingsPathFor(png.string()), ignored))) {
             continue;
         }
         if (::link(temporary.c_str(), png.c_str()) == 0) {
@@ -94,7 +134,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
         }
         return false;
     }
-    if (!saveSettingsFile(settingsPathFor(path), shown.settings, sceneOf(shown), error)) {
+    if (!saveSettingsFor(path, shown, error)) {
         std::remove(path.c_str());
         return false;
     }

@@ -3,7 +3,9 @@
 // settings that reproduce it twice: as JSON (with its "scene") in the PNG's "raylab-settings"
 // tEXt chunk and as a .json file beside it, so that
 //   raylab-render --settings that.json -o again.png
-// writes the same bytes.
+// writes the same bytes. A split picture (ShownImage::compare) records both sides: the image's
+// .json holds the left side's settings and a "split" record, a -right.json beside it the right
+// side's, so that raylab-render reproduces each side from its file.
 
 #include "shown_image.h"
 

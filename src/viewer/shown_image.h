@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace raylab::viewer {
@@ -25,6 +26,10 @@ struct ShownImage {
     // accumulated so far, display and exposure those applied. For a non-preview image,
     // raylab-render with these settings and the same scene gives the same bytes.
     RenderSettings settings;
+    // A split picture: the right side's settings (samplesPerPixel: its samples so far) and the
+    // divider, the fraction of the width shown from `settings`. Empty for a whole picture.
+    std::optional<RenderSettings> compare;
+    float divider = 0.5f;
     std::shared_ptr<const LoadedScene> scene;
     uint64_t jobSerial = 0;     // RenderWorker::submit's serial of the job this picture shows
     bool preview = false;       // a coarse preview upscaled to render resolution: not reproducible

@@ -27,6 +27,7 @@
 #include "scene_loader.h"
 #include "screenshot.h"
 #include "settings_edit.h"
+#include "split_view.h"
 
 #include <GLFW/glfw3.h>
 
@@ -108,8 +109,9 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 // Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
 // ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
-                int framebufferHeight, HeldKeys& held, MouseDrag& drag, PanelState& panel,
-                bool& showPanel, int& screenshots, bool& meanIndirectWanted, bool& quit) {
+                int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
+                DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
+                bool& meanIndirectWanted, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -123,6 +125,8 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 // typed into the panel
             } else if (*command == Command::UseMeanIndirect) {
                 meanIndirectWanted = true;
+            } else if (*command == Command::ToggleSplit) {
+                panel.split = !panel.split;
             } else {
                 quit = true;
             }
@@ -131,7 +135,10 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
     if (!io.WantCaptureMouse && events.scroll != 0.0) {
         moveCamera(static_cast<float>(events.scroll) * step, next);
     }
-    applyDrag(window, drag, events.leftPressed && !io.WantCaptureMouse, framebufferHeight, next);
+    const bool press = events.leftPressed && !io.WantCaptureMouse;
+    const bool onDivider =
+        panel.split && dividerDrag.update(window, press, framebufferWidth, panel.divider);
+    applyDrag(window, drag, press && !onDivider, framebufferHeight, next);
     std::string ignored;
     acceptEdit(next, panel.settings, ignored);
 }
@@ -151,8 +158,14 @@ PictureFacts pictureFacts(const ShownImage& shown) {
                                  static_cast<double>(shown.bgra.height) / shown.passSeconds;
     }
     facts.noisePercent = shown.noise.known ? 100.0 * shown.noise.relativeError : -1.0;
-    facts.pathTraced = !shown.preview && shown.settings.integrator == Integrator::Path &&
-                       shown.settings.view == View::Beauty;
+    // A split picture's path-traced side is the left one unless only the right is path traced.
+    const RenderSettings& pathSide = shown.compare &&
+                                             shown.compare->integrator == Integrator::Path &&
+                                             shown.settings.integrator != Integrator::Path
+                                         ? *shown.compare
+                                         : shown.settings;
+    facts.pathTraced = !shown.preview && pathSide.integrator == Integrator::Path &&
+                       pathSide.view == View::Beauty && pathSide.samplesPerPixel > 0;
     facts.meanIndirect = facts.pathTraced ? shown.meanIndirect : glm::vec3(0.0f);
     return facts;
 }
@@ -160,7 +173,7 @@ PictureFacts pictureFacts(const ShownImage& shown) {
 // "The lab's N for this scene": the constant indirect term set to the path-traced picture's mean
 // N, which a person can then compare with the computed light. False when no such mean is known.
 bool useMeanIndirect(const PictureFacts& picture, RenderSettings& settings) {
-    if (!picture.pathTraced || picture.samples == 0) {
+    if (!picture.pathTraced) {
         return false;
     }
     RenderSettings next = settings;
@@ -168,6 +181,16 @@ bool useMeanIndirect(const PictureFacts& picture, RenderSettings& settings) {
     splitColourIntensity(picture.meanIndirect, next.indirectColor, next.indirectIntensity);
     std::string ignored;
     return acceptEdit(next, settings, ignored);
+}
+
+// The split's divider: a white line two pixels wide over the picture at framebuffer column x
+// (drawn by GL over the quad, never into the traced picture or its screenshots).
+void drawDivider(int x, int framebufferHeight) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(std::max(x - 1, 0), 0, 2, framebufferHeight);
+    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void setStatus(PanelState& panel, const std::string& text, bool isError) {
@@ -206,6 +229,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.settings = command.settings;
     panel.scenePath = scene->source;
     panel.resolutionScale = options.resolutionScale;
+    panel.split = command.split >= 0.0f;
+    panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
@@ -213,6 +238,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     HeldKeys held;      // the navigation keys held down
     RenderJob lastView; // the view of the last picture shown (for stats.viewsShown)
     MouseDrag drag;
+    DividerDrag dividerDrag;
     ShownImage shown;
     RenderJob submitted;
     uint64_t submittedSerial = 0;
@@ -230,7 +256,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     const bool needsFinal = !command.screenshot.empty() || !options.readback.empty();
     // Hands the panel's settings to the render thread when they make another job than the last.
     const auto submitSettings = [&] {
-        const RenderJob job{scene, panel.settings, keepLinear};
+        RenderJob job{scene, panel.settings, keepLinear};
+        if (panel.split) {
+            job.compare = otherIntegrator(panel.settings);
+            job.divider = panel.divider;
+        }
         if (submittedSerial == 0 || !sameJob(job, submitted)) {
             submittedSerial = worker.submit(job);
             submitted = job;
@@ -358,8 +388,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             pictureToUpload = false;
         }
         bool meanIndirectWanted = false;
-        applyInput(input.take(), wokeAt, window.handle(), step, fbHeight, held, drag, panel,
-                   showPanel, screenshots, meanIndirectWanted, quit);
+        applyInput(input.take(), wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
+                   dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, quit);
         if (showPanel) {
             panelNumbers.update(numbers, wokeAt);
             PanelView view;
@@ -425,6 +455,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             glClear(GL_COLOR_BUFFER_BIT);
         }
         quad.draw(fbWidth, fbHeight);
+        if (shown.compare) {
+            drawDivider(splitColumn(fbWidth, shown.divider), fbHeight);
+        }
         if (screenshots > 0 && current) {
             std::string path;
             if (saveNumberedScreenshot(command.screenshotDir, shown, path, error)) {

@@ -1,9 +1,11 @@
 """The path integrator in the real window: "the lab's N for this scene" (the N key sets the
 constant N to the path-traced picture's mean N, which raylab-render's indirect view confirms)."""
 
+import json
 import struct
 
 from e2e_support import Viewer, check
+from pngread import read_png
 
 SIZE = ["--width", "200", "--height", "200"]  # square: every ray of the lab's camera hits the box
 
@@ -47,3 +49,44 @@ def test_mean_n(env):
         mean = sum(row[x][c] for row in rows for x in range(width)) / (width * height)
         check(abs(mean - n[c]) <= 1e-3 * max(mean, 1e-3),
               f"channel {c}: the viewer's N {n[c]} but the indirect view's mean is {mean}")
+
+
+def test_split(env):
+    """The A/B split: left of the divider the lab's integrator, right of it the path tracer, each
+    converging on its own; the screenshot records both sides, and raylab-render reproduces each
+    side's columns from that side's settings file, pixel for pixel."""
+    env.run_ok(env.raylab, ["--width", "240", "--height", "180", "--spp", "4", "--split", "0.4",
+                            "--no-panel", "--frames", "5", "--screenshot", "s.png"])
+    left_settings = json.load(open(env.path("s.json")))
+    right_settings = json.load(open(env.path("s-right.json")))
+    check(left_settings["integrator"]["kind"] == "lab", "the left side is not the lab's")
+    check(right_settings["integrator"]["kind"] == "path", "the right side is not path traced")
+    check(left_settings["split"] == {"divider": 0.4, "side": "left", "other": "s-right.json"},
+          f"left split record {left_settings['split']}")
+    check(right_settings["split"]["other"] == "s.json", "the right side does not name the left")
+    env.run_ok(env.render, ["--settings", "s.json", "-o", "left.png"])
+    env.run_ok(env.render, ["--settings", "s-right.json", "-o", "right.png"])
+    shot, left, right = (read_png(env.path(n)) for n in ("s.png", "left.png", "right.png"))
+    column = round(0.4 * shot.width)
+    differ = 0
+    for y in range(shot.height):
+        for x in range(shot.width):
+            side = left if x < column else right
+            if shot.pixel(x, y) != side.pixel(x, y):
+                check(False, f"pixel ({x}, {y}) of the split is {shot.pixel(x, y)}, its side "
+                      f"renders {side.pixel(x, y)}")
+            differ += left.pixel(x, y) != right.pixel(x, y)
+    # The two integrators differ (the path tracer's shadows and walls are not the constant's).
+    check(differ > shot.width * shot.height // 2,
+          f"only {differ} pixels differ between the lab's and the path tracer's pictures")
+
+    # In a real window: B turns the split off, and the screenshot is then the lab's alone.
+    viewer = Viewer(env, ["--width", "240", "--height", "180", "--spp", "2", "--split", "0.5"])
+    try:
+        png, settings = viewer.key_shot()
+        check("split" in settings, "the split's screenshot has no split record")
+        viewer.xdotool("key", "b")
+        png, settings = viewer.shot_when(lambda p, s: "split" not in s, "B did not end the split")
+        viewer.quit()
+    finally:
+        viewer.kill()
