@@ -9,11 +9,7 @@ namespace raylab::bench {
 
 BlockedRays blockRays(const BenchRays& rays) {
     BlockedRays blocked;
-    // The shadow ray of each primary ray, if any.
-    std::vector<uint32_t> shadowOf(rays.primary.size(), kNoRay);
-    for (std::size_t j = 0; j < rays.shadowPrimary.size(); ++j) {
-        shadowOf[rays.shadowPrimary[j]] = static_cast<uint32_t>(j);
-    }
+    const std::vector<uint32_t> shadowOf = rayOfPrimary(rays.shadowPrimary, rays.primary.size());
     const int ts = rays.tileSize;
     const int tilesX = (rays.width + ts - 1) / ts;
     blocked.blockOffset.assign(1, 0);

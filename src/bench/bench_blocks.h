@@ -20,8 +20,6 @@
 
 namespace raylab::bench {
 
-inline constexpr uint32_t kNoRay = 0xffffffffu;
-
 struct BlockedRays {
     // Block b's rows are packets [b * kPacketSize, b * kPacketSize + rows[b]) of both vectors;
     // a block at the image's right or bottom edge has fewer lanes or rows.

@@ -1,6 +1,8 @@
 #include "bench_rays.h"
 
 #include "core/camera.h"
+#include "core/sampling/hash.h"
+#include "core/sampling/warp.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +10,38 @@
 
 namespace raylab::bench {
 
+namespace {
+
+// The triangle's geometric normal at a hit, turned to face the ray that made it.
+glm::vec3 facingNormal(const Triangle& triangle, const Ray& ray) {
+    const glm::vec3 normal = geometricNormal(triangle);
+    return glm::dot(normal, ray.direction) > 0.0f ? -normal : normal;
+}
+
+} // namespace
+
 int tileIndex(int x0, int y0, int width, int tileSize) {
     const int tilesX = (width + tileSize - 1) / tileSize;
     return (y0 / tileSize) * tilesX + x0 / tileSize;
+}
+
+Pixel pixelOf(const BenchRays& rays, std::size_t tile, std::size_t i) {
+    const int ts = rays.tileSize;
+    const auto tilesX = static_cast<std::size_t>((rays.width + ts - 1) / ts);
+    const int x0 = static_cast<int>(tile % tilesX) * ts;
+    const int y0 = static_cast<int>(tile / tilesX) * ts;
+    const auto tileWidth = static_cast<std::size_t>(std::min(rays.width, x0 + ts) - x0);
+    const std::size_t k = i - rays.primaryOffset[tile]; // row-major inside the tile
+    return Pixel{x0 + static_cast<int>(k % tileWidth), y0 + static_cast<int>(k / tileWidth)};
+}
+
+std::vector<uint32_t> rayOfPrimary(const std::vector<std::size_t>& setPrimary,
+                                   std::size_t primaryCount) {
+    std::vector<uint32_t> ray(primaryCount, kNoRay);
+    for (std::size_t j = 0; j < setPrimary.size(); ++j) {
+        ray[setPrimary[j]] = static_cast<uint32_t>(j);
+    }
+    return ray;
 }
 
 BenchRays makePrimaryRays(const RenderSettings& settings, int tileSize) {
@@ -36,6 +67,9 @@ BenchRays makePrimaryRays(const RenderSettings& settings, int tileSize) {
             rays.primaryOffset.push_back(rays.primary.size());
         }
     }
+    // No shadow or bounce rays yet.
+    rays.shadowOffset.assign(rays.primaryOffset.size(), 0);
+    rays.bounceOffset.assign(rays.primaryOffset.size(), 0);
     return rays;
 }
 
@@ -51,12 +85,8 @@ void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& s
             }
             // As directLight in core/lab_shading.cpp.
             const Ray& ray = rays.primary[i];
-            const Triangle& triangle = scene.triangles[hits[i].triangle];
             const glm::vec3 point = ray.origin + hits[i].t * ray.direction;
-            glm::vec3 normal = geometricNormal(triangle);
-            if (glm::dot(normal, ray.direction) > 0.0f) {
-                normal = -normal;
-            }
+            const glm::vec3 normal = facingNormal(scene.triangles[hits[i].triangle], ray);
             const glm::vec3 r = settings.light.position - point;
             const float distanceSquared = glm::dot(r, r);
             if (!(distanceSquared > 0.0f)) {
@@ -72,6 +102,36 @@ void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& s
             rays.shadowPrimary.push_back(i);
         }
         rays.shadowOffset.push_back(rays.shadow.size());
+    }
+}
+
+void addBounceRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& scene,
+                   float epsilon) {
+    // Salts the pixel hash, so that these numbers differ from the renderer's pixel jitter.
+    constexpr uint32_t kBounceSalt = 0xb0a2ce11u;
+    rays.bounce.clear();
+    rays.bounceOffset.assign(1, 0);
+    rays.bouncePrimary.clear();
+    for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
+        for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
+            if (!hits[i].found()) {
+                continue;
+            }
+            const Ray& ray = rays.primary[i];
+            const glm::vec3 normal = facingNormal(scene.triangles[hits[i].triangle], ray);
+            if (normal == glm::vec3(0.0f)) {
+                continue; // no direction to bounce about (never for a triangle the BVH holds)
+            }
+            const Pixel pixel = pixelOf(rays, tile, i);
+            const uint32_t seed = hash32(static_cast<uint32_t>(pixel.x) ^
+                                         hash32(static_cast<uint32_t>(pixel.y) ^ kBounceSalt));
+            const glm::vec2 u(unitFloat(seed), unitFloat(hash32(seed ^ 0x9e3779b9u)));
+            const glm::vec3 direction = frameAround(normal).toWorld(cosineHemisphere(u));
+            rays.bounce.push_back(
+                Ray{ray.origin + hits[i].t * ray.direction, direction, epsilon, kInfinity});
+            rays.bouncePrimary.push_back(i);
+        }
+        rays.bounceOffset.push_back(rays.bounce.size());
     }
 }
 

@@ -1,36 +1,43 @@
 // raylab-bench [SCENE] [camera and light options] [--threads N] [--frames N] [--json]
+//               [--workload primary|bounce] [--embree-isa NAME]
 //
-// Traces the lab's workload (one primary ray per pixel, one shadow ray per lit hit; 1280 x 720
-// unless --width/--height say otherwise) with raylab's BVH on 1 thread and on N threads, best of
-// --frames frames, and, where Embree is built in, with Embree on the same rays, then compares
-// the two's closest hits. raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and,
-// in the same turns, 8 x 8 pixel blocks through frustum candidates as the renderer does
-// (core/bvh_frustum.h, bench_blocks.h) and single rays. Bench-only flags: --scalar (raylab's
-// scalar reference traversal instead of the SIMD one), --no-packets (single rays only),
-// --no-blocks, --no-embree. Exit codes: 2 usage, 1 other errors, too many hits disagreeing with
-// Embree, or packets, blocks and single rays not giving identical answers.
+// Traces the lab's workload (one primary ray per pixel, one shadow ray per lit hit, and with
+// --workload bounce one diffuse bounce ray per hit; 1280 x 720 unless --width/--height say
+// otherwise) with raylab's BVH on 1 thread and on N threads, best of --frames frames, and, where
+// Embree is built in, with Embree's single-ray, 16-ray packet and stream calls on the same rays,
+// converted to Embree's layouts before timing (embree_rays.h), then compares their answers.
+// raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and, in the same turns, 8 x 8
+// pixel blocks through frustum candidates as the renderer does (core/bvh_frustum.h,
+// bench_blocks.h) and single rays; bounce rays one by one in every case. Bench-only flags:
+// bench_flags.h. Exit codes: 2 usage, 1 other errors, too many hits disagreeing with Embree, or
+// packets, blocks and single rays not giving identical answers.
 
 #include "bench_blocks.h"
+#include "bench_checks.h"
+#include "bench_flags.h"
 #include "bench_rays.h"
 #include "bench_report.h"
 #include "bench_timing.h"
 #include "core/bvh/bvh.h"
 #include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
+#include "core/integrators/lab_shading.h"
 #include "core/render/parallel_tiles.h"
 #include "core/scene_framing.h"
 #include "io/command_line.h"
 #include "io/mesh_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
-#include <cstring>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 #ifdef RAYLAB_HAVE_EMBREE
-#include "embree_tracer.h"
+#include "embree_rays.h"
+#include "embree_scene.h"
 #endif
 
 namespace {
@@ -40,45 +47,6 @@ using namespace raylab::bench;
 
 constexpr int kBenchWidth = 1280;
 constexpr int kBenchHeight = 720;
-
-struct BenchFlags {
-    bool scalar = false;
-    bool noEmbree = false;
-    bool noPackets = false;
-    bool noBlocks = false;
-    float spatialBudget = -1.0f;  // < 0: BvhBuildOptions' default
-    float presplitBudget = -1.0f; // likewise
-    bool sizeGiven = false;
-};
-
-// Removes the bench-only flags from args and notes whether the image size was given.
-BenchFlags takeBenchFlags(std::vector<const char*>& args) {
-    BenchFlags flags;
-    std::vector<const char*> kept;
-    for (const char* arg : args) {
-        if (std::strcmp(arg, "--scalar") == 0) {
-            flags.scalar = true;
-        } else if (std::strcmp(arg, "--no-embree") == 0) {
-            flags.noEmbree = true;
-        } else if (std::strcmp(arg, "--no-packets") == 0) {
-            flags.noPackets = true;
-        } else if (std::strcmp(arg, "--no-blocks") == 0) {
-            flags.noBlocks = true;
-        } else if (std::strncmp(arg, "--spatial-budget=", 17) == 0) {
-            flags.spatialBudget = std::stof(arg + 17);
-        } else if (std::strncmp(arg, "--presplit-budget=", 18) == 0) {
-            flags.presplitBudget = std::stof(arg + 18);
-        } else {
-            const std::string a = arg;
-            if (a.rfind("--width", 0) == 0 || a.rfind("--height", 0) == 0) {
-                flags.sizeGiven = true;
-            }
-            kept.push_back(arg);
-        }
-    }
-    args = kept;
-    return flags;
-}
 
 // Camera, light and epsilon of a scene: given ones kept, the rest framed as raylab-render does.
 void frameMissing(const Scene& scene, CommandLine& cl) {
@@ -100,18 +68,27 @@ void frameMissing(const Scene& scene, CommandLine& cl) {
     }
 }
 
-// Times each tracer `frames` times, one frame each in turn, keeping each one's best and mean.
-void timeInTurns(const BenchRays& rays, int threads, int frames,
-                 const std::vector<const TileTracer*>& tracers,
-                 const std::vector<TracerFigures*>& figures, FrameTimes TracerFigures::*which) {
-    for (TracerFigures* f : figures) {
-        (f->*which).bestSeconds = 1e30;
-        (f->*which).meanSeconds = 0.0;
+// One tracer's part of a frame: `prepare` (untimed; may be empty), then every tile (timed).
+struct Turn {
+    const TileTracer* trace;
+    std::function<void()> prepare;
+    TracerFigures* figures;
+};
+
+// Times each turn `frames` times, one frame each in turn, keeping each one's best and mean.
+void timeInTurns(const BenchRays& rays, int threads, int frames, const std::vector<Turn>& turns,
+                 FrameTimes TracerFigures::*which) {
+    for (const Turn& turn : turns) {
+        (turn.figures->*which).bestSeconds = 1e30;
+        (turn.figures->*which).meanSeconds = 0.0;
     }
     for (int frame = 0; frame < frames; ++frame) {
-        for (std::size_t i = 0; i < tracers.size(); ++i) {
-            const FrameTimes t = timeFrames(rays, threads, 1, *tracers[i]);
-            FrameTimes& out = figures[i]->*which;
+        for (const Turn& turn : turns) {
+            if (turn.prepare) {
+                turn.prepare();
+            }
+            const FrameTimes t = timeFrames(rays, threads, 1, *turn.trace);
+            FrameTimes& out = turn.figures->*which;
             out.bestSeconds = std::min(out.bestSeconds, t.bestSeconds);
             out.meanSeconds += t.bestSeconds / frames;
         }
@@ -122,11 +99,26 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Exit code 1 with a line on stderr when more than 1 in kMaxDisagreement of `rays` closest hits
+// disagree with Embree.
+bool tooManyDisagree(std::size_t disagreeing, std::size_t rays, const char* what) {
+    if (disagreeing * kMaxDisagreement <= rays) {
+        return false;
+    }
+    std::cerr << "raylab-bench: " << disagreeing << " of " << rays << " " << what
+              << " disagree with Embree (more than 1 in " << kMaxDisagreement << ")\n";
+    return true;
+}
+
 int run(int argc, char** argv) {
     std::vector<const char*> args(argv, argv + argc);
-    const BenchFlags flags = takeBenchFlags(args);
-    CommandLine cl;
+    BenchFlags flags;
     std::string error;
+    if (!takeBenchFlags(args, flags, error)) {
+        std::cerr << "raylab-bench: " << error << "\n";
+        return 2;
+    }
+    CommandLine cl;
     if (!flags.sizeGiven) {
         cl.settings.width = kBenchWidth;
         cl.settings.height = kBenchHeight;
@@ -140,12 +132,7 @@ int run(int argc, char** argv) {
     if (cl.help) {
         std::cout << usage(Program::Bench)
                   << "\nraylab-bench traces 1280x720 unless --width or --height is given.\n"
-                     "  --scalar                raylab's scalar reference traversal (binary BVH)\n"
-                     "  --no-packets            single rays only (no 8-ray packets, no blocks)\n"
-                     "  --no-blocks             no 8x8 pixel blocks through frustum candidates\n"
-                     "  --spatial-budget=F      BVH spatial splits: extra references, fraction\n"
-                     "  --presplit-budget=F     BVH pre-splitting: extra references, fraction\n"
-                     "  --no-embree             skip Embree\n";
+                  << benchFlagsHelp();
         return 0;
     }
     if (!flags.sizeGiven) {
@@ -167,6 +154,7 @@ int run(int argc, char** argv) {
     const int threads = resolveThreadCount(cl.settings.threads);
     const int frames = std::max(1, cl.benchFrames);
     report.scene = cl.scene;
+    report.workload = flags.workload;
     report.triangles = scene.triangles.size();
     report.width = cl.settings.width;
     report.height = cl.settings.height;
@@ -184,11 +172,11 @@ int run(int argc, char** argv) {
         buildOptions.presplitBudget = flags.presplitBudget;
     }
     Bvh bvh;
-    report.raylab.buildSeconds = 1e30;
+    double raylabBuildSeconds = 1e30;
     for (int i = 0; i < 3; ++i) {
         const auto start = std::chrono::steady_clock::now();
         bvh = buildBvh(scene, buildOptions);
-        report.raylab.buildSeconds = std::min(report.raylab.buildSeconds, secondsSince(start));
+        raylabBuildSeconds = std::min(raylabBuildSeconds, secondsSince(start));
     }
     report.skipped = bvh.skippedTriangles;
     report.bvhBytes = bvh.memoryBytes();
@@ -196,10 +184,9 @@ int run(int argc, char** argv) {
     report.leafReferences = bvh.leafReferences;
     report.traversal = bvh.wideNodes.empty() ? "scalar binary" : "8-wide AVX2";
 
-    // The workload: primary rays, raylab's hits (untimed), then their shadow rays.
+    // The workload: primary rays, raylab's hits (untimed), then their shadow and bounce rays.
     BenchRays rays = makePrimaryRays(cl.settings);
     std::vector<Hit> hits(rays.primary.size());
-    std::vector<uint8_t> occluded;
     auto closest = [&](const Ray& ray) {
         return flags.scalar ? closestHitScalar(bvh, ray) : closestHit(bvh, ray);
     };
@@ -213,10 +200,22 @@ int run(int argc, char** argv) {
     };
     timeFrames(rays, threads, 1, primaryOnly);
     addShadowRays(rays, hits, scene, cl.settings);
-    occluded.assign(rays.shadow.size(), 0);
+    if (flags.workload == Workload::Bounce) {
+        addBounceRays(rays, hits, scene, cl.settings.shadowEpsilon);
+    }
+    std::vector<uint8_t> occluded(rays.shadow.size(), 0);
+    std::vector<Hit> bounceHits(rays.bounce.size());
     report.primaryRays = rays.primary.size();
     report.shadowRays = rays.shadow.size();
+    report.bounceRays = rays.bounce.size();
 
+    // Bounce rays, one by one, in every raylab tracer (incoherent rays: the renderer would too).
+    auto traceBounces = [&](std::size_t tile) {
+        for (std::size_t j = rays.bounceOffset[tile]; j < rays.bounceOffset[tile + 1]; ++j) {
+            bounceHits[j] = closest(rays.bounce[j]);
+        }
+    };
+    const TileTracer bounceTile = traceBounces;
     // Single rays, one by one.
     const TileTracer singleTile = [&](std::size_t tile) {
         for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
@@ -225,10 +224,13 @@ int run(int argc, char** argv) {
         for (std::size_t j = rays.shadowOffset[tile]; j < rays.shadowOffset[tile + 1]; ++j) {
             occluded[j] = any(rays.shadow[j]) ? 1 : 0;
         }
+        traceBounces(tile);
     };
     // Packets of 8 consecutive rays of a tile: 8 pixels of a row, or 8 shadow rays of
     // neighbouring hits, packed (structure of arrays, ray_packet.h) before any timing.
-    const PacketedRays packeted = packRays(rays);
+    const bool packets = !flags.scalar && !flags.noPackets;
+    report.packets = packets;
+    const PacketedRays packeted = packets ? packRays(rays) : PacketedRays{};
     std::vector<HitPacket> packetHits(packeted.primary.size());
     std::vector<unsigned> packetOccluded(packeted.shadow.size(), 0);
     const TileTracer packetTile = [&](std::size_t tile) {
@@ -240,9 +242,8 @@ int run(int argc, char** argv) {
              ++j) {
             packetOccluded[j] = anyHit8(bvh, packeted.shadow[j]);
         }
+        traceBounces(tile);
     };
-    const bool packets = !flags.scalar && !flags.noPackets;
-    report.packets = packets;
     // 8 x 8 pixel blocks of the same rays, each row a packet, shadow rays in their pixel's lane,
     // traced as the renderer does (bench_blocks.h); packed, and their answers sized, before any
     // timing.
@@ -257,106 +258,95 @@ int run(int argc, char** argv) {
         for (std::size_t b = blocked.blockOffset[tile]; b < blocked.blockOffset[tile + 1]; ++b) {
             traceBlock(bvh, camera, blocked, b, light, shadowFrustum, blockAnswers);
         }
+        traceBounces(tile);
     };
-    // raylab and Embree take turns frame by frame, so both see the same load on a shared machine.
-    std::vector<const TileTracer*> tracers{packets ? &packetTile : &singleTile};
-    std::vector<TracerFigures*> figures{&report.raylab};
-    if (blocks) {
-        tracers.push_back(&blockTile);
-        figures.push_back(&report.raylabBlocks);
+
+    // Every tracer takes its turn frame by frame, so all see the same load on a shared machine.
+    // `turns` trace the whole workload; `bounceTurns` its bounce rays alone.
+    std::vector<Turn> turns;
+    std::vector<Turn> bounceTurns;
+    for (TracerFigures* f : {&report.raylabPackets, &report.raylabBlocks, &report.raylabSingle}) {
+        f->rays = rays.total();
+        f->buildSeconds = raylabBuildSeconds;
     }
     if (packets) {
-        tracers.push_back(&singleTile);
-        figures.push_back(&report.raylabSingle);
+        turns.push_back({&packetTile, {}, &report.raylabPackets});
     }
+    if (blocks) {
+        turns.push_back({&blockTile, {}, &report.raylabBlocks});
+    }
+    turns.push_back({&singleTile, {}, &report.raylabSingle});
+    report.bounceRaylab.rays = rays.bounce.size();
+    report.bounceRaylab.buildSeconds = raylabBuildSeconds;
+    bounceTurns.push_back({&bounceTile, {}, &report.bounceRaylab});
 #ifdef RAYLAB_HAVE_EMBREE
-    std::unique_ptr<EmbreeTracer> embree;
-    std::vector<Hit> embreeHits;
-    std::vector<uint8_t> embreeOccluded;
-    const TileTracer embreeTile = [&](std::size_t tile) {
-        embree->traceTile(rays, tile, embreeHits, embreeOccluded);
-    };
+    std::unique_ptr<EmbreeScene> embree;
+    std::array<std::unique_ptr<EmbreeRays>, kEmbreeCalls> embreeRays;
+    std::array<TileTracer, kEmbreeCalls> embreeTile, embreeBounceTile;
     if (flags.noEmbree) {
         report.embreeAbsent = "skipped (--no-embree)";
     } else {
-        embree = std::make_unique<EmbreeTracer>(scene);
+        EmbreeOptions options;
+        options.isa = flags.embreeIsa;
+        options.threads = threads;
+        embree = std::make_unique<EmbreeScene>(scene, options);
         if (!embree->ok()) {
             std::cerr << "raylab-bench: " << embree->error() << "\n";
             return 1;
         }
-        embreeHits.resize(rays.primary.size());
-        embreeOccluded.assign(rays.shadow.size(), 0);
         report.hasEmbree = true;
-        report.embree.buildSeconds = embree->buildSeconds();
-        tracers.push_back(&embreeTile);
-        figures.push_back(&report.embree);
-    }
-#endif
-    timeInTurns(rays, 1, frames, tracers, figures, &TracerFigures::one);
-    timeInTurns(rays, threads, frames, tracers, figures, &TracerFigures::all);
-#ifdef RAYLAB_HAVE_EMBREE
-    if (embree) {
-        report.disagreeingHits = countDisagreeingHits(hits, embreeHits);
-        for (std::size_t j = 0; j < occluded.size(); ++j) {
-            report.disagreeingShadows += occluded[j] != embreeOccluded[j] ? 1 : 0;
+        report.embreeIsa = flags.embreeIsa;
+        report.embreeBuildSeconds = embree->buildSeconds();
+        report.embreeBytes = embree->memoryBytes();
+        report.embreeGeometryBytes = embree->geometryBytes();
+        for (std::size_t c = 0; c < kEmbreeCalls; ++c) {
+            EmbreeRays* layout =
+                (embreeRays[c] = makeEmbreeRays(static_cast<EmbreeCall>(c), *embree, rays)).get();
+            embreeTile[c] = [layout](std::size_t tile) { layout->traceTile(tile, kAllSets); };
+            embreeBounceTile[c] = [layout](std::size_t tile) {
+                layout->traceTile(tile, kBounceSet);
+            };
+            TracerFigures& f = report.embree[c].figures;
+            f.rays = rays.total();
+            f.buildSeconds = embree->buildSeconds();
+            turns.push_back({&embreeTile[c], [layout] { layout->reset(kAllSets); }, &f});
+            report.bounceEmbree[c].rays = rays.bounce.size();
+            report.bounceEmbree[c].buildSeconds = embree->buildSeconds();
+            bounceTurns.push_back({&embreeBounceTile[c], [layout] { layout->reset(kBounceSet); },
+                                   &report.bounceEmbree[c]});
         }
     }
 #endif
+    timeInTurns(rays, 1, frames, turns, &TracerFigures::one);
+    timeInTurns(rays, threads, frames, turns, &TracerFigures::all);
+    if (flags.workload == Workload::Bounce) {
+        timeInTurns(rays, 1, frames, bounceTurns, &TracerFigures::one);
+        timeInTurns(rays, threads, frames, bounceTurns, &TracerFigures::all);
+    }
+    // The renderer's own path for this scene.
+    const bool rendererBlocks = blocks && tracesInBlocks(bvh);
+    report.raylabPath = rendererBlocks ? "blocks" : packets ? "packets" : "single rays";
+    report.raylab = rendererBlocks ? report.raylabBlocks
+                    : packets      ? report.raylabPackets
+                                   : report.raylabSingle;
 
-    if (packets) {
-        // The packets' answer for each ray: ray k of a tile is lane k % 8 of the tile's packet
-        // k / 8 (bench_rays.h).
-        std::vector<Hit> packetHit(rays.primary.size());
-        std::vector<uint8_t> packetAnswer(rays.shadow.size());
-        for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
-            for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
-                const std::size_t k = i - rays.primaryOffset[tile];
-                packetHit[i] = packetHits[packeted.primaryOffset[tile] + k / kPacketSize].hit(
-                    static_cast<int>(k % kPacketSize));
-                report.packetMismatches +=
-                    std::memcmp(&hits[i], &packetHit[i], sizeof(Hit)) != 0 ? 1 : 0;
-            }
-            for (std::size_t j = rays.shadowOffset[tile]; j < rays.shadowOffset[tile + 1]; ++j) {
-                const std::size_t k = j - rays.shadowOffset[tile];
-                const unsigned answers =
-                    packetOccluded[packeted.shadowOffset[tile] + k / kPacketSize];
-                packetAnswer[j] = ((answers >> (k % kPacketSize)) & 1u) != 0 ? 1 : 0;
-                report.packetMismatches += (occluded[j] != 0) != (packetAnswer[j] != 0) ? 1 : 0;
-            }
+#ifdef RAYLAB_HAVE_EMBREE
+    for (std::size_t c = 0; c < kEmbreeCalls && embree; ++c) {
+        const EmbreeAnswers answers = embreeRays[c]->answers();
+        EmbreeCallFigures& e = report.embree[c];
+        e.disagreeingHits = countDisagreeingHits(hits, answers.primary);
+        e.disagreeingBounceHits = countDisagreeingHits(bounceHits, answers.bounce);
+        for (std::size_t j = 0; j < occluded.size(); ++j) {
+            e.disagreeingShadows += occluded[j] != answers.occluded[j] ? 1 : 0;
         }
-        if (blocks) {
-            // Every lane of every block against the packets' answer for the same ray, bit for bit.
-            std::size_t cameraSeen = 0, shadowSeen = 0;
-            for (std::size_t p = 0; p < blocked.primary.size(); ++p) {
-                for (int lane = 0; lane < kPacketSize; ++lane) {
-                    const std::size_t slot = p * kPacketSize + static_cast<std::size_t>(lane);
-                    if (const uint32_t i = blocked.primaryRay[slot]; i != kNoRay) {
-                        const Hit blockHit = blockAnswers.hits[p].hit(lane);
-                        report.blockMismatches +=
-                            std::memcmp(&blockHit, &packetHit[i], sizeof(Hit)) != 0 ? 1 : 0;
-                        ++cameraSeen;
-                    }
-                    if (const uint32_t j = blocked.shadowRay[slot]; j != kNoRay) {
-                        const bool blockAnswer = ((blockAnswers.occluded[p] >> lane) & 1u) != 0;
-                        report.blockMismatches += blockAnswer != (packetAnswer[j] != 0) ? 1 : 0;
-                        ++shadowSeen;
-                    }
-                }
-            }
-            if (cameraSeen != rays.primary.size() || shadowSeen != rays.shadow.size()) {
-                std::cerr << "raylab-bench: the blocks hold " << cameraSeen << " camera and "
-                          << shadowSeen << " shadow rays, not " << rays.primary.size() << " and "
-                          << rays.shadow.size() << "\n";
-                return 1;
-            }
-            report.cameraBlocks = blocked.blocks();
-            for (std::size_t b = 0; b < blocked.blocks(); ++b) {
-                const uint8_t f = blockAnswers.flags[b];
-                report.cameraBlocksThroughCandidates += (f & kCameraCandidates) != 0 ? 1 : 0;
-                report.shadowBlocks += blocked.blockShadowRays[b];
-                report.shadowBlocksThroughCandidates += (f & kShadowCandidates) != 0 ? 1 : 0;
-            }
-        }
+    }
+#endif
+    if (packets && !checkPacketsAndBlocks(rays, packeted,
+                                          RaylabAnswers{hits, occluded, packetHits, packetOccluded},
+                                          blocks ? &blocked : nullptr,
+                                          blocks ? &blockAnswers : nullptr, report, error)) {
+        std::cerr << "raylab-bench: " << error << "\n";
+        return 1;
     }
 
     if (cl.json) {
@@ -364,11 +354,13 @@ int run(int argc, char** argv) {
     } else {
         printText(std::cout, report);
     }
-    if (report.hasEmbree && report.disagreeingHits * kMaxDisagreement > report.primaryRays) {
-        std::cerr << "raylab-bench: " << report.disagreeingHits << " of " << report.primaryRays
-                  << " closest hits disagree with Embree (more than 1 in " << kMaxDisagreement
-                  << ")\n";
-        return 1;
+    for (std::size_t c = 0; c < kEmbreeCalls && report.hasEmbree; ++c) {
+        if (tooManyDisagree(report.embree[c].disagreeingHits, report.primaryRays,
+                            "closest hits of camera rays") ||
+            tooManyDisagree(report.embree[c].disagreeingBounceHits, report.bounceRays,
+                            "closest hits of bounce rays")) {
+            return 1;
+        }
     }
     if (report.packetMismatches != 0) {
         std::cerr << "raylab-bench: " << report.packetMismatches

@@ -61,6 +61,10 @@ struct alignas(32) RadiancePacket {
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts);
 
+// Whether shadeLabBlock traces this scene's blocks through frustum candidates (small scenes, with
+// the 8-wide BVH) rather than packet by packet: the one rule the renderer and raylab-bench share.
+bool tracesInBlocks(const Bvh& bvh);
+
 // shadeLab8 for each of rays[0, count), 0 <= count <= kPacketSize, with the same results: the
 // rays of an image block (camera rays from one origin), whose triangles and whose shadow rays'
 // blockers are found once for the block (bvh_frustum.h) where the CPU has AVX2.

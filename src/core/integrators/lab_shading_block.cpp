@@ -15,12 +15,6 @@ namespace raylab {
 
 namespace {
 
-// Frustums pay where a scene is a few large triangles (raylab-bench, 1 thread: the lab's box
-// 1.2x the packets' rays per second); for meshes of tens of thousands of triangles the walks
-// that end over kMaxFrustumCandidates cost more than they save (bunny, dragon and Sponza 0.92
-// to 0.95x), so those are traced packet by packet. Nothing was measured in between.
-constexpr std::size_t kMaxFrustumSceneTriangles = 1024;
-
 // Packets whose every lane is written before it is read: not zeroed first (RayPacket::Unset).
 template <typename Packet, std::size_t... I>
 std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
@@ -31,8 +25,7 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
                 RadiancePacket* radiance, RayCounts& counts) {
-    static const bool simd = bvhSimdSupported();
-    if (!simd || bvh.wideNodes.empty() || bvh.leafReferences > kMaxFrustumSceneTriangles) {
+    if (!tracesInBlocks(bvh)) {
         for (int k = 0; k < count; ++k) {
             shadeLab8(scene, bvh, settings, rays[k], radiance[k], counts);
         }
@@ -66,6 +59,16 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
 }
 
 } // namespace
+
+bool tracesInBlocks(const Bvh& bvh) {
+    // Frustums pay where a scene is a few large triangles (raylab-bench, 1 thread: the lab's box
+    // 1.2x the packets' rays per second); for meshes of tens of thousands of triangles the walks
+    // that end over kMaxFrustumCandidates cost more than they save (bunny, dragon and Sponza 0.92
+    // to 0.95x), so those are traced packet by packet. Nothing was measured in between.
+    constexpr std::size_t kMaxFrustumSceneTriangles = 1024;
+    static const bool simd = bvhSimdSupported();
+    return simd && !bvh.wideNodes.empty() && bvh.leafReferences <= kMaxFrustumSceneTriangles;
+}
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts) {
