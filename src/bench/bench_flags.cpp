@@ -62,6 +62,8 @@ bool takeBenchFlags(std::vector<const char*>& args, BenchFlags& flags, std::stri
             flags.noPackets = true;
         } else if (arg == "--no-blocks") {
             flags.noBlocks = true;
+        } else if (arg == "--no-passes") {
+            flags.noPasses = true;
         } else if (arg.rfind("--spatial-budget=", 0) == 0 ||
                    arg.rfind("--presplit-budget=", 0) == 0) {
             const bool spatial = arg[2] == 's';
@@ -101,6 +103,7 @@ const char* benchFlagsHelp() {
            "  --scalar                raylab's scalar reference traversal (binary BVH)\n"
            "  --no-packets            single rays only (no 8-ray packets, no blocks)\n"
            "  --no-blocks             no 8x8 pixel blocks through frustum candidates\n"
+           "  --no-passes             no renderer passes (lab and path integrators' samples/s)\n"
            "  --spatial-budget=F      BVH spatial splits: extra references, fraction\n"
            "  --presplit-budget=F     BVH pre-splitting: extra references, fraction\n"
            "  --embree-isa NAME       Embree's instruction set: sse2, sse4.2, avx or avx2\n"

@@ -14,6 +14,7 @@ struct BenchFlags {
     bool noEmbree = false;                 // --no-embree
     bool noPackets = false;                // --no-packets: raylab's single rays only
     bool noBlocks = false;                 // --no-blocks
+    bool noPasses = false;                 // --no-passes: no renderer passes (bench_passes.h)
     float spatialBudget = -1.0f;           // --spatial-budget=F; < 0: BvhBuildOptions' default
     float presplitBudget = -1.0f;          // --presplit-budget=F; likewise
     Workload workload = Workload::Primary; // --workload primary|bounce

@@ -216,6 +216,13 @@ void printText(std::ostream& out, const BenchReport& r) {
             << "%), shadow " << r.shadowBlocksThroughCandidates << " of " << r.shadowBlocks << " ("
             << format("%.1f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks)) << "%)\n";
     }
+    if (r.passes) {
+        out << "renderer passes, M pixel samples/s (1 thread, " << threadsText(r)
+            << "): lab integrator " << format("%.2f", r.labPasses.oneThread) << ", "
+            << format("%.2f", r.labPasses.allThreads) << "; path integrator "
+            << format("%.2f", r.pathPasses.oneThread) << ", "
+            << format("%.2f", r.pathPasses.allThreads) << "\n";
+    }
     if (!r.hasEmbree) {
         return;
     }
@@ -274,6 +281,18 @@ void printJson(std::ostream& out, const BenchReport& r) {
             << ", \"shadow_blocks_through_candidates\": " << r.shadowBlocksThroughCandidates
             << ", \"shadow_candidate_fraction\": "
             << format("%.4f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks) / 100.0);
+    }
+    if (r.passes) {
+        const auto passJson = [&out](const PassFigures& f) {
+            out << "{\"one_thread\": {\"msamples_per_s\": " << format("%.3f", f.oneThread)
+                << "}, \"all_threads\": {\"msamples_per_s\": " << format("%.3f", f.allThreads)
+                << "}}";
+        };
+        out << ",\n \"passes\": {\"lab\": ";
+        passJson(r.labPasses);
+        out << ", \"path\": ";
+        passJson(r.pathPasses);
+        out << "}";
     }
     out << ",\n \"bvh\": {\"traversal\": " << quoted(r.traversal) << ", \"depth\": " << r.bvhDepth
         << ", \"memory_bytes\": " << r.bvhBytes << ", \"leaf_triangles\": " << r.leafReferences

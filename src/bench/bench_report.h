@@ -1,6 +1,7 @@
 #pragma once
 // What raylab-bench measured, and how it prints it (text for people, JSON for scripts).
 
+#include "bench_passes.h"
 #include "bench_rays.h"
 #include "bench_timing.h"
 #include "core/ray.h"
@@ -70,6 +71,9 @@ struct BenchReport {
     // The bounce workload's bounce rays alone: raylab's single rays and each Embree call.
     TracerFigures bounceRaylab;
     std::array<TracerFigures, kEmbreeCalls> bounceEmbree;
+    // The renderer's passes (bench_passes.h), M pixel samples per second, unless --no-passes.
+    bool passes = false;
+    PassFigures labPasses, pathPasses;
 };
 
 // The fastest Embree call on 1 thread (one = true) or on all threads.

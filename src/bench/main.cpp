@@ -349,6 +349,16 @@ int run(int argc, char** argv) {
         return 1;
     }
 
+    if (!flags.noPasses) {
+        // The renderer's passes, as raylab-render and the viewer make them.
+        RenderSettings lab = cl.settings;
+        lab.integrator = Integrator::Lab;
+        report.labPasses = measurePasses(scene, bvh, lab, threads, frames);
+        RenderSettings path = cl.settings;
+        path.integrator = Integrator::Path;
+        report.pathPasses = measurePasses(scene, bvh, path, threads, frames);
+        report.passes = true;
+    }
     if (cl.json) {
         printJson(std::cout, report);
     } else {

@@ -116,6 +116,26 @@ TEST(BenchCli, NoBlocksKeepsTheOtherKeys) {
     EXPECT_EQ(j.at("packet_mismatches").get<int>(), 0);
 }
 
+TEST(BenchCli, RendererPassesOfBothIntegratorsThroughTheFilm) {
+    const Outcome r = runBench("", "--width 40 --height 30 --frames 1 --no-embree --json");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j.contains("passes"));
+    for (const char* integrator : {"lab", "path"}) {
+        for (const char* threads : {"one_thread", "all_threads"}) {
+            EXPECT_GT(j["passes"][integrator][threads]["msamples_per_s"].get<double>(), 0.0)
+                << integrator << " " << threads;
+        }
+    }
+    // A path sample traces several rays per pixel, the lab's at most two.
+    EXPECT_LT(j["passes"]["path"]["one_thread"]["msamples_per_s"].get<double>(),
+              j["passes"]["lab"]["one_thread"]["msamples_per_s"].get<double>());
+    const Outcome none =
+        runBench("", "--width 40 --height 30 --frames 1 --no-embree --no-passes --json");
+    ASSERT_EQ(none.exitCode, 0) << none.out;
+    EXPECT_FALSE(nlohmann::json::parse(none.out).contains("passes"));
+}
+
 TEST(BenchCli, TextNamesTheBlocks) {
     const Outcome r = runBench("", "--width 48 --height 20 --frames 1 --no-embree");
     ASSERT_EQ(r.exitCode, 0) << r.out;
