@@ -4,6 +4,7 @@
 #include "io/mesh_loader.h"
 
 #include "core/cornell_box.h"
+#include "io/gltf_emissive_strength.h"
 #include "io/text_util.h"
 
 #include <algorithm>
@@ -114,9 +115,10 @@ Material toMaterial(const aiMaterial& source, bool forceGrey) {
         source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == aiReturn_SUCCESS) {
         material.diffuse = clampedColour(colour);
     }
-    // Emitted radiance Le: OBJ's Ke or glTF's emissiveFactor, times glTF's
-    // KHR_materials_emissive_strength where Assimp reads it. Not clamped to 1 (lights are
-    // brighter than that); a negative or non-finite channel is not light: 0.
+    // Emitted radiance Le: OBJ's Ke or glTF's emissiveFactor (times its
+    // KHR_materials_emissive_strength where Assimp reads it; loadMesh applies it where Assimp does
+    // not). Not clamped to 1 (lights are brighter than that); a negative or non-finite channel is
+    // not light: 0.
     aiColor4D emissive(0.0f, 0.0f, 0.0f, 1.0f);
     if (source.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == aiReturn_SUCCESS) {
         ai_real strength = 1.0f;
@@ -239,8 +241,13 @@ bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std
     Scene loaded;
     loaded.name = path;
     report.missingMaterialLibrary = missingMtl;
+    const std::vector<float> strengths = gltfEmissiveStrengths(path);
     for (unsigned i = 0; i < source->mNumMaterials; ++i) {
         loaded.materials.push_back(toMaterial(*source->mMaterials[i], forceGrey));
+        // Assimp's glTF importer reads emissiveFactor but not its strength: applied here.
+        if (i < strengths.size()) {
+            loaded.materials.back().emission *= strengths[i];
+        }
     }
     if (loaded.materials.empty()) {
         loaded.materials.push_back(Material{"default", glm::vec3(kDefaultGrey), glm::vec3(0.0f)});

@@ -214,6 +214,44 @@ TEST(MeshLoader, GltfNodeTransformAndBaseColourApply) {
     EXPECT_FLOAT_EQ(m.diffuse.z, 0.6f);
 }
 
+TEST(MeshLoader, EmissionFromMtlKeAndGltfEmissiveTimesItsStrength) {
+    TempDir dir;
+    dir.write("m.mtl", "newmtl lamp\nKd 0.5 0.5 0.5\nKe 17 12 4\nnewmtl odd\nKe -1 nan 2\n"
+                       "newmtl plain\nKd 0.7 0.7 0.7\n");
+    const Loaded obj = load(dir.write(
+        "t.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl lamp\nf 1 2 3\n"
+                 "usemtl odd\nf 1 2 4\nusemtl plain\nf 1 3 4\n"));
+    ASSERT_TRUE(obj.ok) << obj.error;
+    ASSERT_EQ(obj.scene.triangles.size(), 3u);
+    const auto emission = [&](std::size_t t) {
+        return obj.scene.materials.at(obj.scene.triangles[t].material).emission;
+    };
+    EXPECT_EQ(emission(0), glm::vec3(17.0f, 12.0f, 4.0f)); // Le, not clamped to 1
+    EXPECT_EQ(emission(1), glm::vec3(0.0f, 0.0f, 2.0f));   // negative and NaN are no light
+    EXPECT_EQ(emission(2), glm::vec3(0.0f));
+
+    // glTF: emissiveFactor times KHR_materials_emissive_strength.
+    const std::string gltf =
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+        R"("extensionsUsed":["KHR_materials_emissive_strength"],)"
+        R"("nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],)"
+        R"("materials":[{"emissiveFactor":[0.5,0.25,1],)"
+        R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}}],)"
+        R"("buffers":[{"byteLength":44,"uri":"data:application/octet-stream;base64,)"
+        R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}],)"
+        R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},)"
+        R"({"buffer":0,"byteOffset":36,"byteLength":6}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5123,"count":3,)"
+        R"("type":"SCALAR"}]})";
+    const Loaded l = load(dir.write("lamp.gltf", gltf));
+    ASSERT_TRUE(l.ok) << l.error;
+    ASSERT_EQ(l.scene.triangles.size(), 1u);
+    EXPECT_EQ(l.scene.materials.at(l.scene.triangles[0].material).emission,
+              glm::vec3(2.0f, 1.0f, 4.0f));
+}
+
 TEST(MeshLoader, ObjWithoutMaterialsIsGrey) {
     TempDir dir;
     const Loaded l = load(dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
