@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <iterator>
 #include <sstream>
 #include <utility>
 
@@ -160,6 +161,15 @@ const char* toString(View view) {
         }
     }
     return "beauty";
+}
+
+View nextView(View view, int step) {
+    constexpr int count = static_cast<int>(std::size(kViewNames));
+    int index = 0;
+    while (index < count && kViewNames[index].first != view) {
+        ++index;
+    }
+    return kViewNames[((index + step) % count + count) % count].first;
 }
 
 bool parseView(const std::string& text, View& view) {

@@ -111,6 +111,8 @@ const char* toString(DisplayMode mode);
 bool parseDisplayMode(const std::string& text, DisplayMode& mode);
 const char* toString(Integrator integrator);
 const char* toString(View view);
+// The view `step` places after `view` in the order above, wrapping around (V and Shift+V).
+View nextView(View view, int step);
 // Parses a view's name (beauty, albedo, direct, indirect, visibility, normal, depth).
 bool parseView(const std::string& text, View& view);
 // Parses "lab" or "path"; returns false for anything else.

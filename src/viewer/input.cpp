@@ -15,7 +15,8 @@ InputCollector* collectorOf(GLFWwindow* window) {
     return static_cast<InputCollector*>(glfwGetWindowUserPointer(window));
 }
 
-// The cursor in framebuffer pixels (screen coordinates scaled on high-DPI screens).
+} // namespace
+
 void cursorInPixels(GLFWwindow* window, double& x, double& y) {
     int windowWidth = 0, windowHeight = 0, pixelWidth = 0, pixelHeight = 0;
     glfwGetWindowSize(window, &windowWidth, &windowHeight);
@@ -27,7 +28,16 @@ void cursorInPixels(GLFWwindow* window, double& x, double& y) {
     }
 }
 
-} // namespace
+bool pixelUnderCursor(double x, double y, int framebufferWidth, int framebufferHeight,
+                      int renderWidth, int renderHeight, int& px, int& py) {
+    if (framebufferWidth <= 0 || framebufferHeight <= 0 || x < 0.0 || y < 0.0 ||
+        x >= framebufferWidth || y >= framebufferHeight) {
+        return false;
+    }
+    px = std::min(renderWidth - 1, static_cast<int>(x * renderWidth / framebufferWidth));
+    py = std::min(renderHeight - 1, static_cast<int>(y * renderHeight / framebufferHeight));
+    return px >= 0 && py >= 0;
+}
 
 void InputCollector::attach(GLFWwindow* window) {
     glfwSetWindowUserPointer(window, this);
@@ -76,11 +86,15 @@ void InputCollector::onScroll(GLFWwindow* window, double, double dy) {
     events.scroll += dy;
 }
 
-void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, int) {
+void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, int mods) {
     InputEvents& events = collectorOf(window)->events_;
     events.other = true;
     if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) {
-        events.leftPressed = true;
+        if ((mods & GLFW_MOD_CONTROL) != 0) {
+            events.inspectPressed = true;
+        } else {
+            events.leftPressed = true;
+        }
     }
 }
 
@@ -138,6 +152,7 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_F1: return Command::TogglePanel;
     case GLFW_KEY_N: return Command::UseMeanIndirect;
     case GLFW_KEY_B: return Command::ToggleSplit;
+    case GLFW_KEY_V: return Command::NextView;
     default: return std::nullopt;
     }
 }

@@ -19,7 +19,7 @@ struct GLFWwindow;
 
 namespace raylab::viewer {
 
-enum class Command { Screenshot, Quit, TogglePanel, UseMeanIndirect, ToggleSplit };
+enum class Command { Screenshot, Quit, TogglePanel, UseMeanIndirect, ToggleSplit, NextView };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost
 // the focus (every key counts as up then).
@@ -36,6 +36,7 @@ struct InputEvents {
     std::vector<NavKeyChange> navKeys; // the navigation keys' changes, in order; no repeats
     double scroll = 0.0;               // wheel notches, positive = away from the user
     bool leftPressed = false;          // the left button went down
+    bool inspectPressed = false;       // ... with Ctrl held: look inside the pixel under it
     bool keyboard = false;             // a key (press, repeat, release) or a character arrived
     bool other = false;                // a mouse, cursor or window event arrived
 };
@@ -74,6 +75,14 @@ std::optional<Command> commandForKey(int glfwKey);
 
 // The mouse drag that turns the camera: while the left button, pressed outside the panel, is
 // held, the point under the cursor follows the cursor (a drag to the right turns the camera left).
+// The cursor in framebuffer pixels (screen coordinates scaled on high-DPI screens).
+void cursorInPixels(GLFWwindow* window, double& x, double& y);
+
+// The picture's pixel (px, py) under framebuffer point (x, y), the picture of renderWidth x
+// renderHeight pixels covering the whole framebuffer; false outside it.
+bool pixelUnderCursor(double x, double y, int framebufferWidth, int framebufferHeight,
+                      int renderWidth, int renderHeight, int& px, int& py);
+
 // The split's divider under the mouse: a press that grabs it (grabsDivider) moves it with the
 // cursor until the button is released, instead of turning the camera.
 class DividerDrag {

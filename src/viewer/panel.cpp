@@ -1,6 +1,7 @@
 #include "panel.h"
 
 #include "core/camera.h"
+#include "core/lab_presets.h"
 #include "render_worker.h"
 #include "settings_edit.h"
 
@@ -196,6 +197,89 @@ void displaySection(RenderSettings& edit, PanelState& state) {
                      ImGuiSliderFlags_AlwaysClamp);
 }
 
+// What the picture shows (a term of the equation, or the lit picture) and the lab's steps.
+void viewSection(RenderSettings& edit) {
+    if (!ImGui::CollapsingHeader("View and the lab's steps", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    static constexpr View kViews[] = {View::Beauty,     View::Albedo, View::Direct, View::Indirect,
+                                      View::Visibility, View::Normal, View::Depth,  View::Cost};
+    if (ImGui::BeginCombo("view (V)", toString(edit.view))) {
+        for (const View v : kViews) {
+            if (ImGui::Selectable(toString(v), v == edit.view)) {
+                edit.view = v;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::BeginCombo("lab step", "set the lab's step...")) {
+        for (const LabPreset& preset : labPresets()) {
+            const std::string name(preset.name);
+            if (ImGui::Selectable(name.c_str())) {
+                preset.apply(edit);
+            }
+            if (ImGui::IsItemHovered()) {
+                ImGui::SetTooltip("%s\n%s", std::string(preset.shows).c_str(),
+                                  std::string(preset.equation).c_str());
+            }
+        }
+        ImGui::EndCombo();
+    }
+}
+
+// The inspected pixel: the lab's equation with its numbers (Ctrl+click a pixel).
+void inspectorSection(const PanelView& view) {
+    if (!ImGui::CollapsingHeader("Inside a pixel (Ctrl+click)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    if (view.inspection == nullptr) {
+        ImGui::TextDisabled("Ctrl+click the picture to look inside a pixel");
+        return;
+    }
+    const PixelInspection& p = *view.inspection;
+    const auto v3 = [](const char* label, const glm::vec3& v) {
+        ImGui::Text("%s %.4g %.4g %.4g", label, static_cast<double>(v.x), static_cast<double>(v.y),
+                    static_cast<double>(v.z));
+    };
+    ImGui::Text("pixel %d, %d", p.x, p.y);
+    if (!p.hit) {
+        ImGui::TextUnformatted("the ray hits nothing: R = 0");
+        return;
+    }
+    ImGui::Text("triangle %u (material %u) at t = %.4g", p.triangle, p.material,
+                static_cast<double>(p.t));
+    v3("point", p.point);
+    v3("rho", p.rho);
+    v3("n (facing the ray)", p.normal);
+    v3("r (to the light)", p.toLight);
+    ImGui::Text("|r| = %.4g, r.n = %.4g", static_cast<double>(p.distance),
+                static_cast<double>(p.cosTheta));
+    if (p.blocker) {
+        ImGui::Text("shadow ray blocked by triangle %u at t = %.3g (eps %.3g < t < %.4g)",
+                    p.blocker->triangle, static_cast<double>(p.blocker->t),
+                    static_cast<double>(p.shadowEpsilon), static_cast<double>(p.shadowTMax));
+    } else {
+        ImGui::Text("shadow ray %s", p.shadowTested ? "clear" : "not traced");
+    }
+    v3("D", p.direct);
+    v3("N", p.indirect);
+    if (p.emitted != glm::vec3(0.0f)) {
+        v3("E", p.emitted);
+    }
+    v3("R = E + rho (D + N)", p.radiance);
+    ImGui::Text("shown %d %d %d", p.display[0], p.display[1], p.display[2]);
+    if (!p.path.empty()) {
+        ImGui::Text("one path, %zu surfaces:", p.path.size());
+        for (std::size_t i = 0; i < p.path.size(); ++i) {
+            const PathVertexRecord& vertex = p.path[i];
+            ImGui::Text(" %zu: D %.3g %.3g %.3g adds %.3g %.3g %.3g", i,
+                        static_cast<double>(vertex.direct.x), static_cast<double>(vertex.direct.y),
+                        static_cast<double>(vertex.direct.z), static_cast<double>(vertex.adds.x),
+                        static_cast<double>(vertex.adds.y), static_cast<double>(vertex.adds.z));
+        }
+    }
+}
+
 void statisticsSection(const PanelView& view) {
     if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen) ||
         view.numbers == nullptr) {
@@ -280,8 +364,10 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
 
     statisticsSection(view);
     RenderSettings edit = state.settings;
+    inspectorSection(view);
     lightSection(edit, view);
     lightTransportSection(edit, state, view, actions);
+    viewSection(edit);
     indirectAndShadowSection(edit, view);
     cameraSection(edit, view, actions);
     displaySection(edit, state);

@@ -4,10 +4,13 @@
 // It sits at a fixed place (kPanelX, kPanelY), with the screenshot button first, so scripts can
 // click it. Widgets edit a copy of the settings that is accepted only when valid (settings_edit.h).
 
+#include "core/integrators/pixel_inspection.h"
 #include "core/render_settings.h"
 #include "panel_numbers.h"
 
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace raylab::viewer {
@@ -24,6 +27,8 @@ struct PanelState {
     // integrator (splitCompare, split_view.h); divider: the fraction of the width on the left.
     bool split = false;
     float divider = 0.5f;
+    // The pixel looked inside (Ctrl+click), in render pixels; its numbers are PanelView's.
+    std::optional<std::array<int, 2>> inspected;
     std::string scenePath; // the path field
     std::string refused;   // why the last edit was refused; empty when it was not
     std::string status;    // the last screenshot or scene-load message
@@ -38,6 +43,8 @@ struct PanelView {
     float step = 0.1f;        // navigationStep of the scene: drag speeds
     float maxEpsilon = 0.1f;  // the right end of the epsilon slider
     bool hasEmitters = false; // the scene has emitting triangles (their scale is shown)
+    // The inspected pixel's numbers (core's inspectPixel), when a pixel is inspected.
+    const PixelInspection* inspection = nullptr;
     // The statistics shown: a copy refreshed a few times a second (PanelNumbersRefresh), so that
     // an untouched panel draws the same pixels from frame to frame. Null: none shown.
     const PanelNumbers* numbers = nullptr;

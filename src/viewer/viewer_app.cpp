@@ -10,11 +10,13 @@
 #include <string>
 
 #define GLFW_INCLUDE_NONE
+#include "core/integrators/pixel_inspection.h"
 #include "core/scene_framing.h"
 #include "gl_window.h"
 #include "held_keys.h"
 #include "image_quad.h"
 #include "input.h"
+#include "io/inspection_json.h"
 #include "key_relay.h"
 #include "panel.h"
 #include "panel_cache.h"
@@ -111,7 +113,7 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
                 DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
-                bool& meanIndirectWanted, bool& quit) {
+                bool& meanIndirectWanted, bool& inspectWanted, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -127,6 +129,10 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 meanIndirectWanted = true;
             } else if (*command == Command::ToggleSplit) {
                 panel.split = !panel.split;
+            } else if (*command == Command::NextView) {
+                const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                                   glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+                next.view = nextView(next.view, shift ? -1 : 1);
             } else {
                 quit = true;
             }
@@ -134,6 +140,16 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
     }
     if (!io.WantCaptureMouse && events.scroll != 0.0) {
         moveCamera(static_cast<float>(events.scroll) * step, next);
+    }
+    if (events.inspectPressed && !io.WantCaptureMouse) {
+        double x = 0.0, y = 0.0;
+        cursorInPixels(window, x, y);
+        int px = 0, py = 0;
+        if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, panel.settings.width,
+                             panel.settings.height, px, py)) {
+            panel.inspected = std::array<int, 2>{px, py};
+            inspectWanted = true;
+        }
     }
     const bool press = events.leftPressed && !io.WantCaptureMouse;
     const bool onDivider =
@@ -190,6 +206,34 @@ void drawDivider(int x, int framebufferHeight) {
     glScissor(std::max(x - 1, 0), 0, 2, framebufferHeight);
     glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+// A square outline around the inspected pixel (px, py) of a width x height picture shown over
+// the whole framebuffer, drawn by GL over the quad.
+void drawPixelMarker(int px, int py, int width, int height, int framebufferWidth,
+                     int framebufferHeight) {
+    const int x0 = px * framebufferWidth / width;
+    const int x1 = (px + 1) * framebufferWidth / width;
+    const int top = py * framebufferHeight / height;
+    const int bottom = (py + 1) * framebufferHeight / height;
+    // GL's rows count from the bottom.
+    const int y0 = framebufferHeight - bottom;
+    const int size = std::max(x1 - x0, bottom - top) + 8;
+    const int cx = (x0 + x1) / 2;
+    const int cy = y0 + (bottom - top) / 2;
+    glEnable(GL_SCISSOR_TEST);
+    glClearColor(1.0f, 0.2f, 0.8f, 1.0f);
+    const int left = cx - size / 2;
+    const int low = cy - size / 2;
+    const int rects[4][4] = {{left, low, size, 2},
+                             {left, low + size - 2, size, 2},
+                             {left, low, 2, size},
+                             {left + size - 2, low, 2, size}};
+    for (const auto& r : rects) {
+        glScissor(std::max(r[0], 0), std::max(r[1], 0), r[2], r[3]);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     glDisable(GL_SCISSOR_TEST);
 }
 
@@ -388,8 +432,25 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             pictureToUpload = false;
         }
         bool meanIndirectWanted = false;
+        bool inspectWanted = false;
         applyInput(input.take(), wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
-                   dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, quit);
+                   dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
+                   quit);
+        // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
+        // JSON (raylab-render --inspect's) on standard output when a click asks, for scripts.
+        std::optional<PixelInspection> inspection;
+        if (panel.inspected && ((*panel.inspected)[0] >= panel.settings.width ||
+                                (*panel.inspected)[1] >= panel.settings.height)) {
+            panel.inspected.reset(); // the picture got smaller
+        }
+        if (panel.inspected) {
+            inspection = inspectPixel(scene->scene, scene->bvh, scene->emitters, panel.settings,
+                                      (*panel.inspected)[0], (*panel.inspected)[1]);
+            if (inspectWanted) {
+                std::printf("%s\n", inspectionToJson(*inspection).c_str());
+                std::fflush(stdout);
+            }
+        }
         if (showPanel) {
             panelNumbers.update(numbers, wokeAt);
             PanelView view;
@@ -400,6 +461,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             view.maxEpsilon = maxEpsilon;
             view.numbers = &panelNumbers.shown();
             view.hasEmitters = !scene->emitters.empty();
+            view.inspection = inspection ? &*inspection : nullptr;
             // The panel draws a copy of the settings (panel_settings_refresh.h); edits, made
             // only while it is in use, when the copy is the live settings, count.
             const ImGuiIO& io = ImGui::GetIO();
@@ -457,6 +519,10 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         quad.draw(fbWidth, fbHeight);
         if (shown.compare) {
             drawDivider(splitColumn(fbWidth, shown.divider), fbHeight);
+        }
+        if (panel.inspected && panel.settings.width > 0 && panel.settings.height > 0) {
+            drawPixelMarker((*panel.inspected)[0], (*panel.inspected)[1], panel.settings.width,
+                            panel.settings.height, fbWidth, fbHeight);
         }
         if (screenshots > 0 && current) {
             std::string path;

@@ -90,3 +90,30 @@ def test_split(env):
         viewer.quit()
     finally:
         viewer.kill()
+
+
+def test_inspect(env):
+    """Ctrl+click looks inside a pixel: the viewer prints the pixel's equation as raylab-render
+    --inspect does (the same numbers), and shows it in its panel; V steps through the views of
+    one term, Shift+V back."""
+    size = ["--width", "480", "--height", "360"]
+    viewer = Viewer(env, size + ["--spp", "2"])
+    try:
+        viewer.xdotool("mousemove", "--window", viewer.window, "390", "200")
+        viewer.xdotool("keydown", "ctrl", "click", "1", "keyup", "ctrl")
+        _, settings = viewer.key_shot("v")
+        check(settings["display"]["view"] == "albedo", f"V gave the view {settings['display']}")
+        _, settings = viewer.key_shot("shift+v")
+        check(settings["display"]["view"] == "beauty", f"Shift+V gave {settings['display']}")
+        viewer.quit()
+    finally:
+        viewer.kill()
+    lines = [line for line in viewer.output().splitlines() if line.startswith("{")]
+    check(len(lines) == 1, f"expected one inspection printed, got {lines}")
+    seen = json.loads(lines[0])
+    check(seen["pixel"] == [390, 200], f"inspected pixel {seen['pixel']}")
+    result = env.run_ok(env.render, size + ["--inspect", "390,200"])
+    expected = json.loads(result.stdout)
+    check(seen == expected, f"the viewer's inspection {seen} differs from raylab-render's "
+          f"{expected}")
+    check(seen["hit"], "the inspected pixel misses the box")
