@@ -25,7 +25,51 @@ std::string text(float value) {
 
 std::string text(const glm::vec3& v) { return text(v.x) + "," + text(v.y) + "," + text(v.z); }
 
+std::string text(int value) { return std::to_string(value); }
+std::string text(bool value) { return value ? "on" : "off"; }
+std::string text(DisplayMode mode) { return toString(mode); }
+std::string text(SamplerKind kind) { return toString(kind); }
+
 } // namespace
+
+std::vector<std::string> settingsDifferences(const RenderSettings& a, const RenderSettings& b) {
+    std::vector<std::string> out;
+    const auto field = [&out](const char* name, const auto& x, const auto& y) {
+        if (!(x == y)) {
+            out.push_back(std::string(name) + " " + text(x) + " -> " + text(y));
+        }
+    };
+    field("camera position", a.camera.position, b.camera.position);
+    field("yaw", a.camera.yawDegrees, b.camera.yawDegrees);
+    field("pitch", a.camera.pitchDegrees, b.camera.pitchDegrees);
+    field("field of view", a.camera.verticalFovDegrees, b.camera.verticalFovDegrees);
+    field("light position", a.light.position, b.light.position);
+    field("light colour", a.light.color, b.light.color);
+    field("light power", a.light.intensity, b.light.intensity);
+    field("light radius", a.light.radius, b.light.radius);
+    field("indirect", a.indirect, b.indirect);
+    field("indirect colour", a.indirectColor, b.indirectColor);
+    field("indirect N", a.indirectIntensity, b.indirectIntensity);
+    field("shadows", a.shadows, b.shadows);
+    field("shadow epsilon", a.shadowEpsilon, b.shadowEpsilon);
+    field("width", a.width, b.width);
+    field("height", a.height, b.height);
+    field("sample cap", a.samplesPerPixel, b.samplesPerPixel);
+    field("threads", a.threads, b.threads);
+    field("display", a.display, b.display);
+    field("exposure", a.exposure, b.exposure);
+    if (a.integrator != b.integrator) {
+        out.push_back(std::string("integrator ") + toString(a.integrator) + " -> " +
+                      toString(b.integrator));
+    }
+    field("max bounces", a.maxBounces, b.maxBounces);
+    field("emission scale", a.emissionScale, b.emissionScale);
+    field("sampler", a.sampler, b.sampler);
+    if (a.view != b.view) {
+        out.push_back(std::string("view ") + toString(a.view) + " -> " + toString(b.view));
+    }
+    return out;
+}
 
 std::string validate(const RenderSettings& s) {
     const Camera& c = s.camera;

@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -96,6 +97,10 @@ inline constexpr int kMaxBounces = 1024;
 // indirect constant: intensity = the largest channel, colour = rgb / intensity (white with
 // intensity 0 for black). Every channel must be finite and >= 0.
 void splitColourIntensity(const glm::vec3& rgb, glm::vec3& colour, float& intensity);
+
+// The fields in which b differs from a, one short line each ("shadow epsilon 0.001 -> 0"), in
+// the struct's order; empty when they are equal. For the viewer's comparison of two pictures.
+std::vector<std::string> settingsDifferences(const RenderSettings& a, const RenderSettings& b);
 
 // True when two settings give the same samples, so that a film of one can go on accumulating
 // for the other: every field but the sample cap, the thread count and the display transform.

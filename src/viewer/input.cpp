@@ -153,6 +153,7 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_N: return Command::UseMeanIndirect;
     case GLFW_KEY_B: return Command::ToggleSplit;
     case GLFW_KEY_V: return Command::NextView;
+    case GLFW_KEY_K: return Command::KeepSnapshot;
     default: return std::nullopt;
     }
 }

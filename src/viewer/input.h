@@ -19,7 +19,15 @@ struct GLFWwindow;
 
 namespace raylab::viewer {
 
-enum class Command { Screenshot, Quit, TogglePanel, UseMeanIndirect, ToggleSplit, NextView };
+enum class Command {
+    Screenshot,
+    Quit,
+    TogglePanel,
+    UseMeanIndirect,
+    ToggleSplit,
+    NextView,
+    KeepSnapshot,
+};
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost
 // the focus (every key counts as up then).

@@ -4,6 +4,7 @@
 #include "core/lab_presets.h"
 #include "render_worker.h"
 #include "settings_edit.h"
+#include "split_view.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -75,10 +76,30 @@ void lightTransportSection(RenderSettings& edit, PanelState& state, const PanelV
     if (ImGui::Combo("integrator", &sampler, "Sobol\0independent\0")) {
         edit.sampler = sampler == 0 ? SamplerKind::Sobol : SamplerKind::Independent;
     }
-    ImGui::Checkbox("A/B split (B): left this integrator, right the other", &state.split);
+    ImGui::Checkbox("A/B split (B); hold F for the right side", &state.split);
+    if (ImGui::Button("Keep as A (K)")) {
+        actions.keepSnapshot = true;
+    }
+    ImGui::SameLine(0.0f, inner);
+    ImGui::BeginDisabled(!state.snapshot);
+    int right = state.compareSnapshot && state.snapshot ? 1 : 0;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+    if (ImGui::Combo("##right side", &right, "right: the other integrator\0right: A\0")) {
+        state.compareSnapshot = right == 1;
+    }
+    ImGui::EndDisabled();
     if (state.split) {
         ImGui::SliderFloat("divider", &state.divider, 0.0f, 1.0f, "%.2f",
                            ImGuiSliderFlags_AlwaysClamp);
+        if (state.compareSnapshot && state.snapshot) {
+            const std::vector<std::string> differences =
+                settingsDifferences(edit, splitCompare(edit, &*state.snapshot));
+            ImGui::TextUnformatted(differences.empty() ? "left (live) and right (A): the same"
+                                                       : "left (live) -> right (A):");
+            for (const std::string& line : differences) {
+                ImGui::BulletText("%s", line.c_str());
+            }
+        }
     }
     ImGui::BeginDisabled(edit.integrator != Integrator::Path && !state.split);
     ImGui::InputInt("max bounces", &edit.maxBounces);

@@ -27,6 +27,10 @@ struct PanelState {
     // integrator (splitCompare, split_view.h); divider: the fraction of the width on the left.
     bool split = false;
     float divider = 0.5f;
+    // Snapshot A (K, or the panel's button): settings kept to compare with. With compareSnapshot
+    // the split's right side shows A instead of the other integrator (splitCompare).
+    std::optional<RenderSettings> snapshot;
+    bool compareSnapshot = false;
     // The pixel looked inside (Ctrl+click), in render pixels; its numbers are PanelView's.
     std::optional<std::array<int, 2>> inspected;
     std::string scenePath; // the path field
@@ -56,6 +60,7 @@ struct PanelActions {
     bool resetToLab = false;
     bool openScene = false;       // load PanelState::scenePath
     bool useMeanIndirect = false; // set the lab's N to the path-traced picture's mean N
+    bool keepSnapshot = false;    // keep the current settings as snapshot A
 };
 
 // Draws the panel for this ImGui frame.

@@ -12,6 +12,18 @@ RenderSettings otherIntegrator(const RenderSettings& settings) {
     return other;
 }
 
+RenderSettings splitCompare(const RenderSettings& live, const RenderSettings* snapshot) {
+    if (snapshot == nullptr) {
+        return otherIntegrator(live);
+    }
+    RenderSettings right = *snapshot;
+    right.width = live.width;
+    right.height = live.height;
+    right.threads = live.threads;
+    right.samplesPerPixel = live.samplesPerPixel;
+    return right;
+}
+
 bool grabsDivider(double x, int width, float divider) {
     return std::abs(x - static_cast<double>(splitColumn(width, divider))) <= kDividerGrabPixels;
 }

@@ -14,6 +14,10 @@ namespace raylab::viewer {
 // The right side of the viewer's integrator split: the same settings with the other integrator.
 RenderSettings otherIntegrator(const RenderSettings& settings);
 
+// The right side of a split of `live`: `snapshot` (at live's size, threads and sample cap) when
+// given, else the other integrator.
+RenderSettings splitCompare(const RenderSettings& live, const RenderSettings* snapshot);
+
 // Whether a press at cursor column x (framebuffer pixels) grabs the divider of a picture
 // `width` pixels wide: within kDividerGrabPixels of its column.
 inline constexpr double kDividerGrabPixels = 8.0;

@@ -129,6 +129,10 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 meanIndirectWanted = true;
             } else if (*command == Command::ToggleSplit) {
                 panel.split = !panel.split;
+            } else if (*command == Command::KeepSnapshot) {
+                panel.snapshot = next;
+                panel.compareSnapshot = true;
+                panel.split = true;
             } else if (*command == Command::NextView) {
                 const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
                                    glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
@@ -302,8 +306,12 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     const auto submitSettings = [&] {
         RenderJob job{scene, panel.settings, keepLinear};
         if (panel.split) {
-            job.compare = otherIntegrator(panel.settings);
-            job.divider = panel.divider;
+            const RenderSettings* snapshot =
+                panel.compareSnapshot && panel.snapshot ? &*panel.snapshot : nullptr;
+            job.compare = splitCompare(panel.settings, snapshot);
+            // Holding F flips to the right side (A) over the whole picture.
+            job.divider =
+                glfwGetKey(window.handle(), GLFW_KEY_F) == GLFW_PRESS ? 0.0f : panel.divider;
         }
         if (submittedSerial == 0 || !sameJob(job, submitted)) {
             submittedSerial = worker.submit(job);
@@ -486,6 +494,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 setStatus(panel, "a scene is loading already", true);
             }
             meanIndirectWanted = meanIndirectWanted || actions.useMeanIndirect;
+            if (actions.keepSnapshot) {
+                panel.snapshot = panel.settings;
+                panel.compareSnapshot = true;
+                panel.split = true;
+            }
         }
         if (meanIndirectWanted) {
             if (useMeanIndirect(numbers.picture, panel.settings)) {

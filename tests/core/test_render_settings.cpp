@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace raylab {
 namespace {
@@ -84,6 +87,50 @@ TEST(RenderSettings, DisplayModeNamesRoundTrip) {
     EXPECT_EQ(mode, DisplayMode::Lab);
     EXPECT_FALSE(parseDisplayMode("SRGB ", mode));
     EXPECT_FALSE(parseDisplayMode("", mode));
+}
+
+TEST(RenderSettings, DifferencesNameEveryFieldThatDiffers) {
+    const RenderSettings a;
+    EXPECT_TRUE(settingsDifferences(a, a).empty());
+    // One change of each field: exactly one line, naming it.
+    const std::vector<std::pair<const char*, void (*)(RenderSettings&)>> changes = {
+        {"camera position", [](RenderSettings& s) { s.camera.position.x = 1.0f; }},
+        {"yaw", [](RenderSettings& s) { s.camera.yawDegrees = 3.0f; }},
+        {"pitch", [](RenderSettings& s) { s.camera.pitchDegrees = 3.0f; }},
+        {"field of view", [](RenderSettings& s) { s.camera.verticalFovDegrees = 40.0f; }},
+        {"light position", [](RenderSettings& s) { s.light.position.y = 0.1f; }},
+        {"light colour", [](RenderSettings& s) { s.light.color.x = 0.5f; }},
+        {"light power", [](RenderSettings& s) { s.light.intensity = 2.0f; }},
+        {"light radius", [](RenderSettings& s) { s.light.radius = 0.1f; }},
+        {"indirect", [](RenderSettings& s) { s.indirect = false; }},
+        {"indirect colour", [](RenderSettings& s) { s.indirectColor.z = 0.2f; }},
+        {"indirect N", [](RenderSettings& s) { s.indirectIntensity = 0.2f; }},
+        {"shadows", [](RenderSettings& s) { s.shadows = false; }},
+        {"shadow epsilon", [](RenderSettings& s) { s.shadowEpsilon = 0.0f; }},
+        {"width", [](RenderSettings& s) { s.width = 7; }},
+        {"height", [](RenderSettings& s) { s.height = 7; }},
+        {"sample cap", [](RenderSettings& s) { s.samplesPerPixel = 7; }},
+        {"threads", [](RenderSettings& s) { s.threads = 7; }},
+        {"display", [](RenderSettings& s) { s.display = DisplayMode::Srgb; }},
+        {"exposure", [](RenderSettings& s) { s.exposure = 1.0f; }},
+        {"integrator", [](RenderSettings& s) { s.integrator = Integrator::Path; }},
+        {"max bounces", [](RenderSettings& s) { s.maxBounces = 2; }},
+        {"emission scale", [](RenderSettings& s) { s.emissionScale = 2.0f; }},
+        {"sampler", [](RenderSettings& s) { s.sampler = SamplerKind::Independent; }},
+        {"view", [](RenderSettings& s) { s.view = View::Depth; }},
+    };
+    for (const auto& [name, change] : changes) {
+        RenderSettings b = a;
+        change(b);
+        ASSERT_NE(a, b) << name;
+        const std::vector<std::string> lines = settingsDifferences(a, b);
+        ASSERT_EQ(lines.size(), 1u) << name;
+        EXPECT_EQ(lines[0].rfind(name, 0), 0u) << lines[0];
+    }
+    // Every field of the struct is one of those: a field added without a line fails here.
+    EXPECT_EQ(changes.size(), 24u);
+    static_assert(sizeof(RenderSettings) == 128, "a field was added: give it a line in "
+                                                 "settingsDifferences and a change above");
 }
 
 } // namespace

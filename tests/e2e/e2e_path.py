@@ -117,3 +117,25 @@ def test_inspect(env):
     check(seen == expected, f"the viewer's inspection {seen} differs from raylab-render's "
           f"{expected}")
     check(seen["hit"], "the inspected pixel misses the box")
+
+
+def test_snapshot(env):
+    """K keeps the settings as A and splits the picture, live on the left, A on the right; a change
+    after it shows on the left only, and the screenshot's two files record both."""
+    viewer = Viewer(env, ["--width", "240", "--height", "180", "--spp", "2"])
+    try:
+        viewer.xdotool("key", "k")
+        _, settings = viewer.key_shot("w")  # the light forward, after A was kept
+        viewer.quit()
+    finally:
+        viewer.kill()
+    shot = viewer.screenshots()[-1]
+    left = json.load(open(shot[:-4] + ".json"))
+    right = json.load(open(shot[:-4] + "-right.json"))
+    check(left["split"]["side"] == "left" and right["split"]["side"] == "right",
+          "the snapshot's screenshot is not a split")
+    check(right["light"]["position"] == [0, 0.5, -0.7],
+          f"A's light moved: {right['light']['position']}")
+    check(left["light"]["position"] != right["light"]["position"],
+          "the live side's light did not move")
+    check(left["integrator"] == right["integrator"], "A compares another integrator")

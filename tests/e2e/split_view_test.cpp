@@ -68,6 +68,26 @@ TEST(SplitView, TheRightSideIsTheOtherIntegrator) {
     EXPECT_EQ(same, path); // nothing else changed
 }
 
+TEST(SplitView, ASnapshotComparesAtTheLivePicturesSize) {
+    RenderSettings live;
+    live.width = 300;
+    live.height = 200;
+    live.threads = 2;
+    live.samplesPerPixel = 9;
+    RenderSettings snapshot;
+    snapshot.shadowEpsilon = 0.0f;
+    snapshot.width = 10;
+    const RenderSettings right = splitCompare(live, &snapshot);
+    EXPECT_EQ(right.shadowEpsilon, 0.0f);
+    EXPECT_EQ(right.width, 300);
+    EXPECT_EQ(right.height, 200);
+    EXPECT_EQ(right.threads, 2);
+    EXPECT_EQ(right.samplesPerPixel, 9);
+    EXPECT_EQ(settingsDifferences(live, right),
+              std::vector<std::string>{"shadow epsilon 0.001 -> 0"});
+    EXPECT_EQ(splitCompare(live, nullptr), otherIntegrator(live));
+}
+
 TEST(SplitView, SettingsFilesRecordTheirSide) {
     RenderSettings s;
     const std::string text = settingsToJson(s, "cornell", SplitRecord{0.25f, "right", "a.json"});
