@@ -48,26 +48,6 @@ using namespace raylab::bench;
 constexpr int kBenchWidth = 1280;
 constexpr int kBenchHeight = 720;
 
-// Camera, light and epsilon of a scene: given ones kept, the rest framed as raylab-render does.
-void frameMissing(const Scene& scene, CommandLine& cl) {
-    RenderSettings framed = cl.settings;
-    if (cl.scene != "cornell") {
-        frameScene(scene, framed);
-    }
-    if (!cl.cameraGiven) {
-        cl.settings.camera = framed.camera;
-    }
-    if (!cl.lightGiven) {
-        cl.settings.light = framed.light;
-    }
-    if (!cl.shadowEpsilonGiven) {
-        cl.settings.shadowEpsilon = framed.shadowEpsilon;
-    }
-    if (cl.lookAt) {
-        lookAt(cl.settings.camera, *cl.lookAt);
-    }
-}
-
 // One tracer's part of a frame: `prepare` (untimed; may be empty), then every tile (timed).
 struct Turn {
     const TileTracer* trace;
@@ -150,7 +130,11 @@ int run(int argc, char** argv) {
     if (const std::string warnings = describe(loadReport, cl.scene); !warnings.empty()) {
         std::cerr << warnings << (warnings.back() == '\n' ? "" : "\n");
     }
-    frameMissing(scene, cl);
+    // The scene's camera and light, placed as raylab-render places them.
+    if (const std::string why = finishSettings(scene, cl); !why.empty()) {
+        std::cerr << "raylab-bench: " << why << "\n";
+        return 1;
+    }
     const int threads = resolveThreadCount(cl.settings.threads);
     const int frames = std::max(1, cl.benchFrames);
     report.scene = cl.scene;

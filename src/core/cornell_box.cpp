@@ -57,7 +57,7 @@ void addBlock(Scene& scene, const Corners& k, uint32_t material) {
 
 Scene makeCornellBox() {
     Scene scene;
-    scene.name = "cornell";
+    scene.name = std::string(kLabBoxName);
     const std::array<std::pair<const char*, LabColor>, 7> materials{{
         {"red", LabColor::Red},
         {"yellow", LabColor::Yellow},

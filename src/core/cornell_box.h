@@ -5,7 +5,14 @@
 
 #include "scene.h"
 
+#include <string_view>
+
 namespace raylab {
+
+// The lab's box's name where the programs take a scene (SCENE, the panel's path field, settings
+// files): any other name is a mesh file.
+inline constexpr std::string_view kLabBoxName = "cornell";
+inline bool isLabBoxName(std::string_view name) { return name == kLabBoxName; }
 
 // Triangle order: floor (2), left wall (2), right wall (2), ceiling (2), back wall (2),
 // short block (10), tall block (10). Materials: one per colour, in the order of LabColor.

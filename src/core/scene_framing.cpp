@@ -63,3 +63,47 @@ void frameScene(const Scene& scene, RenderSettings& settings) {
 }
 
 } // namespace raylab
+
+namespace raylab {
+
+void placeForScene(const Scene& scene, bool isLabBox, const GivenSettings& given,
+                   RenderSettings& settings) {
+    RenderSettings placed = settings;
+    if (isLabBox) {
+        const RenderSettings lab;
+        placed.camera = lab.camera;
+        placed.light.position = lab.light.position;
+        placed.light.color = lab.light.color;
+        placed.light.intensity = lab.light.intensity;
+        placed.shadowEpsilon = lab.shadowEpsilon;
+    } else {
+        frameScene(scene, placed);
+    }
+    if (given.cameraPosition) {
+        placed.camera.position = settings.camera.position;
+    }
+    if (given.cameraYaw) {
+        placed.camera.yawDegrees = settings.camera.yawDegrees;
+    }
+    if (given.cameraPitch) {
+        placed.camera.pitchDegrees = settings.camera.pitchDegrees;
+    }
+    if (given.cameraFov) {
+        placed.camera.verticalFovDegrees = settings.camera.verticalFovDegrees;
+    }
+    if (given.lightPosition) {
+        placed.light.position = settings.light.position;
+    }
+    if (given.lightColor) {
+        placed.light.color = settings.light.color;
+    }
+    if (given.lightIntensity) {
+        placed.light.intensity = settings.light.intensity;
+    }
+    if (given.shadowEpsilon) {
+        placed.shadowEpsilon = settings.shadowEpsilon;
+    }
+    settings = placed;
+}
+
+} // namespace raylab

@@ -20,4 +20,23 @@ float navigationStep(const Aabb& bounds);
 // settings are kept. An empty scene is left as is.
 void frameScene(const Scene& scene, RenderSettings& settings);
 
+// Which of the placed settings the user gave (by flag, settings file or panel): placeForScene
+// keeps these.
+struct GivenSettings {
+    bool cameraPosition = false;
+    bool cameraYaw = false;
+    bool cameraPitch = false;
+    bool cameraFov = false; // --fov or --focal
+    bool lightPosition = false;
+    bool lightColor = false;
+    bool lightIntensity = false;
+    bool shadowEpsilon = false;
+};
+
+// Where a new scene's camera and light go, the one rule of every program: the lab's camera, light
+// and shadow epsilon for the lab's box, frameScene's for a mesh, except the fields `given` keeps
+// as they are in `settings`. Every other setting is kept.
+void placeForScene(const Scene& scene, bool isLabBox, const GivenSettings& given,
+                   RenderSettings& settings);
+
 } // namespace raylab

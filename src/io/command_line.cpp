@@ -258,6 +258,8 @@ const std::vector<Option>& options() {
              }
              preset->apply(s.out.settings);
              s.out.preset = preset;
+             // Its camera, light and epsilon are chosen values: placing the scene keeps them.
+             s.out.given = GivenSettings{true, true, true, true, true, true, true, true};
              return {};
          }},
         {"--view", "NAME", kRender | kViewer,
@@ -601,36 +603,7 @@ std::string usage(Program program) {
 
 std::string finishSettings(const Scene& scene, CommandLine& commandLine) {
     RenderSettings& settings = commandLine.settings;
-    if (commandLine.scene != "cornell") {
-        RenderSettings framed = settings;
-        frameScene(scene, framed);
-        const GivenSettings& given = commandLine.given;
-        if (given.cameraPosition) {
-            framed.camera.position = settings.camera.position;
-        }
-        if (given.cameraYaw) {
-            framed.camera.yawDegrees = settings.camera.yawDegrees;
-        }
-        if (given.cameraPitch) {
-            framed.camera.pitchDegrees = settings.camera.pitchDegrees;
-        }
-        if (given.cameraFov) {
-            framed.camera.verticalFovDegrees = settings.camera.verticalFovDegrees;
-        }
-        if (given.lightPosition) {
-            framed.light.position = settings.light.position;
-        }
-        if (given.lightColor) {
-            framed.light.color = settings.light.color;
-        }
-        if (given.lightIntensity) {
-            framed.light.intensity = settings.light.intensity;
-        }
-        if (given.shadowEpsilon) {
-            framed.shadowEpsilon = settings.shadowEpsilon;
-        }
-        settings = framed;
-    }
+    placeForScene(scene, isLabBoxName(commandLine.scene), commandLine.given, settings);
     if (commandLine.lookAt) {
         lookAt(settings.camera, *commandLine.lookAt);
     }

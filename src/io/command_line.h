@@ -3,9 +3,11 @@
 // Flags override --settings FILE.json, which overrides the defaults (the lab's, or for a mesh the
 // framing of core/scene_framing.h).
 
+#include "core/cornell_box.h"
 #include "core/lab_presets.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
+#include "core/scene_framing.h"
 
 #include <optional>
 #include <string>
@@ -14,21 +16,8 @@ namespace raylab {
 
 enum class Program { Render, Viewer, Bench };
 
-// Which settings the user gave, by flag or in the --settings file. A mesh scene is framed
-// (frameScene) except for these.
-struct GivenSettings {
-    bool cameraPosition = false;
-    bool cameraYaw = false;
-    bool cameraPitch = false;
-    bool cameraFov = false; // --fov or --focal
-    bool lightPosition = false;
-    bool lightColor = false;
-    bool lightIntensity = false;
-    bool shadowEpsilon = false;
-};
-
 struct CommandLine {
-    std::string scene = "cornell";
+    std::string scene{kLabBoxName};
     RenderSettings settings;
     // Which parts were given (by flag or settings file); a mesh scene frames the rest.
     bool cameraGiven = false; // position, yaw or pitch
@@ -66,10 +55,10 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
 
 std::string usage(Program program);
 
-// Once the scene is loaded: a mesh scene (anything but the built-in "cornell") gets core
-// frameScene's camera, light and epsilon except for what the user gave; then --look-at turns the
-// camera. Returns an empty string, or one line when the result fails validate() (e.g. a look-at
-// point straight above the camera).
+// Once the scene is loaded: core's placeForScene (the lab's camera and light for the lab's box,
+// frameScene's for a mesh) except for what the user gave; then --look-at turns the camera. Returns
+// an empty string, or one line when the result fails validate() (e.g. a look-at point straight
+// above the camera).
 std::string finishSettings(const Scene& scene, CommandLine& commandLine);
 
 } // namespace raylab

@@ -302,7 +302,7 @@ bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std
 
 bool loadScene(const std::string& nameOrPath, Scene& scene, MeshLoadReport& report,
                std::string& error) {
-    if (nameOrPath == "cornell") {
+    if (isLabBoxName(nameOrPath)) {
         report = MeshLoadReport{};
         scene = makeCornellBox();
         return true;

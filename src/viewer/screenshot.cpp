@@ -1,5 +1,6 @@
 #include "screenshot.h"
 
+#include "core/cornell_box.h"
 #include "io/settings_json.h"
 
 #include <cerrno>
@@ -14,7 +15,7 @@ namespace raylab::viewer {
 namespace {
 
 std::string sceneOf(const ShownImage& shown) {
-    return shown.scene ? shown.scene->source : std::string("cornell");
+    return shown.scene ? shown.scene->source : std::string(kLabBoxName);
 }
 
 bool hasExtension(const std::string& path, const char* extension) {

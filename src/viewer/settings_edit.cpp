@@ -45,18 +45,7 @@ void resetToLabDefaults(const Scene& scene, bool isLabBox, RenderSettings& setti
 }
 
 void placeForScene(const Scene& scene, bool isLabBox, RenderSettings& settings) {
-    RenderSettings placed = settings;
-    if (isLabBox) {
-        const RenderSettings lab;
-        placed.camera = lab.camera;
-        placed.light = lab.light;
-        placed.shadowEpsilon = lab.shadowEpsilon;
-    } else {
-        frameScene(scene, placed);
-    }
-    settings.camera = placed.camera;
-    settings.light = placed.light;
-    settings.shadowEpsilon = placed.shadowEpsilon;
+    raylab::placeForScene(scene, isLabBox, GivenSettings{}, settings);
 }
 
 } // namespace raylab::viewer

@@ -53,7 +53,7 @@ void waitForEvents(Clock::time_point until) {
     glfwPollEvents();
 }
 
-bool isLabBox(const LoadedScene& scene) { return scene.source == "cornell"; }
+bool isLabBox(const LoadedScene& scene) { return isLabBoxName(scene.source); }
 
 // Render resolution for a framebuffer side: side * scale, at least 1 and at most the maximum.
 int renderSide(int framebufferSide, float scale) {
