@@ -149,5 +149,39 @@ TEST(SceneFraming, AnEmptySceneLeavesTheSettingsAlone) {
     EXPECT_EQ(s.light.position, before.light.position);
 }
 
+TEST(PlaceForScene, TheLabsPlacesForTheBoxFramingForAMeshAndGivenFieldsKept) {
+    const Scene box = makeCornellBox();
+    RenderSettings s;
+    s.camera.position = {1.0f, 2.0f, 3.0f};
+    s.light.intensity = 3.0f;
+    s.shadowEpsilon = 0.5f;
+    s.samplesPerPixel = 7;
+    RenderSettings placed = s;
+    placeForScene(box, true, GivenSettings{}, placed);
+    EXPECT_EQ(placed.camera, Camera());
+    EXPECT_EQ(placed.light, PointLight());
+    EXPECT_EQ(placed.shadowEpsilon, RenderSettings().shadowEpsilon);
+    EXPECT_EQ(placed.samplesPerPixel, 7); // other settings kept
+
+    GivenSettings given;
+    given.lightIntensity = true;
+    given.shadowEpsilon = true;
+    Scene mesh = box;
+    for (Triangle& t : mesh.triangles) {
+        t.v0 *= 10.0f;
+        t.v1 *= 10.0f;
+        t.v2 *= 10.0f;
+    }
+    placed = s;
+    placeForScene(mesh, false, given, placed);
+    RenderSettings framed = s;
+    frameScene(mesh, framed);
+    EXPECT_EQ(placed.camera, framed.camera);
+    EXPECT_EQ(placed.light.position, framed.light.position);
+    EXPECT_EQ(placed.light.intensity, 3.0f); // given: kept, not the framed power
+    EXPECT_EQ(placed.shadowEpsilon, 0.5f);
+    EXPECT_NE(framed.light.intensity, 3.0f);
+}
+
 } // namespace
 } // namespace raylab
