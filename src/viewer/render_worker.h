@@ -1,9 +1,10 @@
 #pragma once
-// The render thread. It owns the picture's Film (core) and, while the job does not change,
-// adds one sample per pixel per pass (sample 0 is the pixel centre, later ones jittered) until
-// the job's sample cap; then it sleeps on a condition variable (no CPU use). A new job that changes
-// the picture cancels the pass in flight (an atomic flag checked between tiles) and restarts; a
-// change of display transform only re-maps the sums; a higher cap continues accumulating.
+// The render thread. It owns the picture's Film (core; two for a split job, one per side) and,
+// while the job does not change, adds one sample per pixel per pass (to the side with fewer
+// samples) until the job's sample cap; then it sleeps on a condition variable (no CPU use). A new
+// job that changes the picture cancels the pass in flight (an atomic flag checked between tiles)
+// and restarts; a change of display transform or of the split's divider only re-maps the sums; a
+// higher cap continues accumulating.
 //
 // After a restart, when the last passes show a full pass would take longer than a UI frame
 // budget, the thread first renders a coarse preview (1/k resolution, upscaled by pixel
