@@ -154,6 +154,8 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_B: return Command::ToggleSplit;
     case GLFW_KEY_V: return Command::NextView;
     case GLFW_KEY_K: return Command::KeepSnapshot;
+    case GLFW_KEY_H:
+    case GLFW_KEY_SLASH: return Command::ToggleKeyList; // H, or ? (Shift + /)
     default: return std::nullopt;
     }
 }

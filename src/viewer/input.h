@@ -27,6 +27,7 @@ enum class Command {
     ToggleSplit,
     NextView,
     KeepSnapshot,
+    ToggleKeyList,
 };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost

@@ -314,7 +314,8 @@ void statisticsSection(const PanelView& view) {
                 static_cast<double>(n.drawMs.mean()), n.uploadMs);
     if (const PictureFacts& p = n.picture; p.width > 0) {
         ImGui::Text("%d x %d, %d samples%s, %zu triangles", p.width, p.height, p.samples,
-                    p.preview ? " (preview)" : (p.final ? " (cap)" : ""), view.triangles);
+                    p.preview ? " (preview)" : (p.final ? ": converged (cap reached)" : ""),
+                    view.triangles);
         ImGui::Text("pass %.1f ms, %.2f Mrays/s, %.2f Msamples/s", p.passMs, p.raysPerSecond * 1e-6,
                     p.samplesPerSecond * 1e-6);
         if (p.noisePercent >= 0.0) {

@@ -17,6 +17,7 @@
 #include "image_quad.h"
 #include "input.h"
 #include "io/inspection_json.h"
+#include "key_list.h"
 #include "key_relay.h"
 #include "panel.h"
 #include "panel_cache.h"
@@ -113,7 +114,7 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
                 DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
-                bool& meanIndirectWanted, bool& inspectWanted, bool& quit) {
+                bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -129,6 +130,8 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 meanIndirectWanted = true;
             } else if (*command == Command::ToggleSplit) {
                 panel.split = !panel.split;
+            } else if (*command == Command::ToggleKeyList) {
+                showKeys = !showKeys;
             } else if (*command == Command::KeepSnapshot) {
                 panel.snapshot = next;
                 panel.compareSnapshot = true;
@@ -280,6 +283,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.split = command.split >= 0.0f;
     panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
+    bool showKeys = false; // the list of keys and mouse gestures (H)
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
@@ -443,7 +447,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         bool inspectWanted = false;
         applyInput(input.take(), wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
-                   quit);
+                   showKeys, quit);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
         // JSON (raylab-render --inspect's) on standard output when a click asks, for scripts.
         std::optional<PixelInspection> inspection;
@@ -545,6 +549,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 setStatus(panel, "screenshot not saved: " + error, true);
             }
             screenshots = 0;
+        }
+        if (showKeys) {
+            drawKeyList();
         }
         panelCache.draw(gui.endFrame(), fbWidth, fbHeight);
         keys.frameEnded();

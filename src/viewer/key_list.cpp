@@ -1,0 +1,50 @@
+#include "key_list.h"
+
+#include <imgui.h>
+
+namespace raylab::viewer {
+
+namespace {
+
+constexpr KeyHelp kKeys[] = {
+    {"Up / Down", "move the camera forward / back"},
+    {"Left / Right", "turn the camera (yaw)"},
+    {"mouse drag, wheel", "turn the camera, move it forward / back"},
+    {"W / S, A / D, Q / E", "move the light forward / back, left / right, down / up"},
+    {"V / Shift+V", "the next / previous view (beauty, albedo, direct, indirect, ...)"},
+    {"Ctrl + click", "look inside that pixel: its equation with the numbers"},
+    {"N", "the lab's N := the path-traced picture's mean N"},
+    {"B", "A/B split on / off (drag its divider line)"},
+    {"K", "keep the settings as snapshot A and compare live against it"},
+    {"F (held)", "show the split's right side over the whole picture"},
+    {"F12", "save a screenshot"},
+    {"F1", "show / hide the panel"},
+    {"H or ?", "show / hide this list"},
+    {"Escape", "quit"},
+};
+
+} // namespace
+
+std::span<const KeyHelp> keyList() { return kKeys; }
+
+void drawKeyList() {
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.5f * io.DisplaySize.y),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Keys and mouse (H)", nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoCollapse);
+    if (ImGui::BeginTable("keys", 2)) {
+        for (const KeyHelp& key : kKeys) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(key.input);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(key.does);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+} // namespace raylab::viewer
