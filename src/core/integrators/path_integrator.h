@@ -9,6 +9,9 @@
 // Emitting triangles reach D two ways, combined by multiple importance sampling (the power
 // heuristic): sampled directly (next-event estimation, a triangle chosen by power) and hit by
 // chance by the cosine-weighted bounce. The lab's light is only sampled (it is not geometry).
+// With the lab's shadows switched off, shadow rays are not traced: next-event estimation then
+// sees emitters through blockers while bounces still stop at the first surface, so that switch
+// is a lab experiment, not a light transport to compare with a reference.
 
 #include "bvh/bvh.h"
 #include "integrators/lab_shading.h"
