@@ -156,6 +156,8 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_K: return Command::KeepSnapshot;
     case GLFW_KEY_H:
     case GLFW_KEY_SLASH: return Command::ToggleKeyList; // H, or ? (Shift + /)
+    case GLFW_KEY_Z: return Command::Undo;
+    case GLFW_KEY_Y: return Command::Redo;
     default: return std::nullopt;
     }
 }

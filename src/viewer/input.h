@@ -28,6 +28,8 @@ enum class Command {
     NextView,
     KeepSnapshot,
     ToggleKeyList,
+    Undo, // Z, with Ctrl
+    Redo, // Y, or Z with Shift, with Ctrl
 };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost

@@ -30,6 +30,7 @@
 #include "scene_loader.h"
 #include "screenshot.h"
 #include "settings_edit.h"
+#include "settings_history.h"
 #include "split_view.h"
 
 #include <GLFW/glfw3.h>
@@ -114,7 +115,8 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
                 DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
-                bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys, bool& quit) {
+                bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys,
+                SettingsHistory& history, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -130,6 +132,18 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 meanIndirectWanted = true;
             } else if (*command == Command::ToggleSplit) {
                 panel.split = !panel.split;
+            } else if (*command == Command::Undo || *command == Command::Redo) {
+                const auto down = [window](int a, int b) {
+                    return glfwGetKey(window, a) == GLFW_PRESS ||
+                           glfwGetKey(window, b) == GLFW_PRESS;
+                };
+                if (down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL)) {
+                    const bool redo = *command == Command::Redo ||
+                                      down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+                    if (redo ? history.redo(next) : history.undo(next)) {
+                        panel.settings = next;
+                    }
+                }
             } else if (*command == Command::ToggleKeyList) {
                 showKeys = !showKeys;
             } else if (*command == Command::KeepSnapshot) {
@@ -283,7 +297,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.split = command.split >= 0.0f;
     panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
-    bool showKeys = false; // the list of keys and mouse gestures (H)
+    bool showKeys = false;                   // the list of keys and mouse gestures (H)
+    SettingsHistory history(panel.settings); // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
@@ -447,7 +462,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         bool inspectWanted = false;
         applyInput(input.take(), wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
-                   showKeys, quit);
+                   showKeys, history, quit);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
         // JSON (raylab-render --inspect's) on standard output when a click asks, for scripts.
         std::optional<PixelInspection> inspection;
@@ -520,6 +535,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         // The job: the panel's settings at the framebuffer's resolution times the scale.
         panel.settings.width = renderSide(fbWidth, panel.resolutionScale);
         panel.settings.height = renderSide(fbHeight, panel.resolutionScale);
+        history.observe(panel.settings, wokeAt);
         submitSettings();
         // A picture of the current job that settings reproduce exactly.
         const bool current =

@@ -3,6 +3,7 @@ constant N to the path-traced picture's mean N, which raylab-render's indirect v
 
 import json
 import struct
+import time
 
 from e2e_support import Viewer, check
 from pngread import read_png
@@ -139,3 +140,26 @@ def test_snapshot(env):
     check(left["light"]["position"] != right["light"]["position"],
           "the live side's light did not move")
     check(left["integrator"] == right["integrator"], "A compares another integrator")
+
+
+def test_undo(env):
+    """Ctrl+Z undoes a change once it has settled, Ctrl+Shift+Z (or Ctrl+Y) redoes it."""
+    viewer = Viewer(env, ["--width", "240", "--height", "180", "--spp", "2"])
+    try:
+        _, moved = viewer.key_shot("w")
+        start = [0, 0.5, -0.7]
+        check(moved["light"]["position"] != start, "W did not move the light")
+        time.sleep(0.8)  # the change settles into a step
+        _, undone = viewer.key_shot("ctrl+z")
+        check(undone["light"]["position"] == start,
+              f"Ctrl+Z left the light at {undone['light']['position']}")
+        _, redone = viewer.key_shot("ctrl+shift+z")
+        check(redone["light"]["position"] == moved["light"]["position"],
+              f"Ctrl+Shift+Z put the light at {redone['light']['position']}")
+        _, again = viewer.key_shot("ctrl+z")
+        _, redone = viewer.key_shot("ctrl+y")
+        check(again["light"]["position"] == start and
+              redone["light"]["position"] == moved["light"]["position"], "Ctrl+Y did not redo")
+        viewer.quit()
+    finally:
+        viewer.kill()
