@@ -84,6 +84,33 @@ void lookAt(Camera& camera, const glm::vec3& target) {
                                      -kMaxLookAtPitchDegrees, kMaxLookAtPitchDegrees);
 }
 
+void orbitCamera(Camera& camera, const glm::vec3& pivot, float yawDegrees, float pitchDegrees) {
+    constexpr float kMaxOrbitPitchDegrees = 85.0f;
+    const glm::vec3 toPivot = pivot - camera.position;
+    const float distance = glm::length(toPivot);
+    if (!(distance > 0.0f) || !std::isfinite(distance)) {
+        return;
+    }
+    const glm::vec3 d = toPivot / distance;
+    const float yaw = glm::degrees(std::atan2(d.x, d.z)) + yawDegrees;
+    const float pitch =
+        std::clamp(glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))) + pitchDegrees,
+                   -kMaxOrbitPitchDegrees, kMaxOrbitPitchDegrees);
+    const float cy = std::cos(glm::radians(yaw));
+    const float sy = std::sin(glm::radians(yaw));
+    const float cp = std::cos(glm::radians(pitch));
+    const float sp = std::sin(glm::radians(pitch));
+    const glm::vec3 forward(sy * cp, sp, cy * cp);
+    camera.position = pivot - distance * forward;
+    camera.yawDegrees = yaw;
+    camera.pitchDegrees = pitch;
+}
+
+void panCamera(Camera& camera, float right, float up) {
+    const glm::mat3 axes = worldFromCamera(camera);
+    camera.position += right * axes[0] + up * axes[1];
+}
+
 float focalLengthPixels(float verticalFovDegrees, int imageHeight) {
     return 0.5f * static_cast<float>(imageHeight) /
            std::tan(0.5f * glm::radians(verticalFovDegrees));

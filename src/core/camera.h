@@ -32,6 +32,15 @@ glm::vec3 forwardOf(const Camera& camera);
 // Yaw and pitch that make the camera at its position look at target (unchanged when they coincide).
 void lookAt(Camera& camera, const glm::vec3& target);
 
+// Moves the camera on the sphere about `pivot` through its position (the orbit of a viewer's
+// right drag): its direction to the pivot turns by yawDegrees about world y and pitchDegrees
+// up, the distance is kept, and the camera looks at the pivot. The pitch stays within +-85
+// degrees. A camera at the pivot is left as it is.
+void orbitCamera(Camera& camera, const glm::vec3& pivot, float yawDegrees, float pitchDegrees);
+
+// Moves the camera along its own right and up axes (world units): a pan.
+void panCamera(Camera& camera, float right, float up);
+
 // Focal length in pixels for an image of the given height, and its inverse.
 float focalLengthPixels(float verticalFovDegrees, int imageHeight);
 float verticalFovFromFocal(float focalPixels, int imageHeight);

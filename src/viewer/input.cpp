@@ -89,12 +89,21 @@ void InputCollector::onScroll(GLFWwindow* window, double, double dy) {
 void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, int mods) {
     InputEvents& events = collectorOf(window)->events_;
     events.other = true;
-    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) {
+    if (action != GLFW_PRESS) {
+        return;
+    }
+    if (button == GLFW_MOUSE_BUTTON_LEFT) {
         if ((mods & GLFW_MOD_CONTROL) != 0) {
             events.inspectPressed = true;
+        } else if ((mods & GLFW_MOD_ALT) != 0) {
+            events.orbitPressed = true;
         } else {
             events.leftPressed = true;
         }
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+        events.orbitPressed = true;
+    } else if (button == GLFW_MOUSE_BUTTON_MIDDLE) {
+        events.panPressed = true;
     }
 }
 
@@ -175,6 +184,30 @@ bool DividerDrag::update(GLFWwindow* window, bool start, int framebufferWidth, f
     if (dragging_ && framebufferWidth > 0) {
         divider = std::clamp(static_cast<float>(x / framebufferWidth), 0.0f, 1.0f);
     }
+    return dragging_;
+}
+
+bool ButtonDrag::update(GLFWwindow* window, bool start, double& dx, double& dy) {
+    dx = 0.0;
+    dy = 0.0;
+    // An Alt + left orbit holds the left button.
+    const bool down = glfwGetMouseButton(window, button_) == GLFW_PRESS ||
+                      (button_ == GLFW_MOUSE_BUTTON_RIGHT &&
+                       glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS);
+    if (!down && !start) {
+        dragging_ = false;
+        return false;
+    }
+    double x = 0.0, y = 0.0;
+    cursorInPixels(window, x, y);
+    if (start) {
+        dragging_ = true;
+    } else if (dragging_) {
+        dx = x - lastX_;
+        dy = y - lastY_;
+    }
+    lastX_ = x;
+    lastY_ = y;
     return dragging_;
 }
 

@@ -48,6 +48,8 @@ struct InputEvents {
     double scroll = 0.0;               // wheel notches, positive = away from the user
     bool leftPressed = false;          // the left button went down
     bool inspectPressed = false;       // ... with Ctrl held: look inside the pixel under it
+    bool orbitPressed = false;         // the right button (or Alt + left) went down: orbit
+    bool panPressed = false;           // the middle button went down: pan
     bool keyboard = false;             // a key (press, repeat, release) or a character arrived
     bool other = false;                // a mouse, cursor or window event arrived
 };
@@ -104,6 +106,20 @@ public:
 
 private:
     bool dragging_ = false;
+};
+
+// A drag with one button: the cursor's motion (framebuffer pixels) since the last update while
+// the button stays down after a press that `start`ed it.
+class ButtonDrag {
+public:
+    explicit ButtonDrag(int glfwButton) : button_(glfwButton) {}
+    // Returns whether the drag is under way; dx, dy: the motion since the last update.
+    bool update(GLFWwindow* window, bool start, double& dx, double& dy);
+
+private:
+    int button_;
+    bool dragging_ = false;
+    double lastX_ = 0.0, lastY_ = 0.0;
 };
 
 class MouseDrag {

@@ -9,7 +9,9 @@ namespace {
 constexpr KeyHelp kKeys[] = {
     {"Up / Down", "move the camera forward / back"},
     {"Left / Right", "turn the camera (yaw)"},
-    {"mouse drag, wheel", "turn the camera, move it forward / back"},
+    {"mouse drag, wheel", "turn the camera (fly), move it forward / back"},
+    {"right drag, Alt + left drag", "orbit about the point under the cursor"},
+    {"middle drag", "pan"},
     {"W / S, A / D, Q / E", "move the light forward / back, left / right, down / up"},
     {"V / Shift+V", "the next / previous view (beauty, albedo, direct, indirect, ...)"},
     {"Ctrl + click", "look inside that pixel: its equation with the numbers"},

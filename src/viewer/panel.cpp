@@ -179,6 +179,7 @@ void cameraSection(RenderSettings& edit, const PanelView& view, PanelActions& ac
                           "height of %d px",
                           edit.height);
     }
+    ImGui::TextDisabled("left drag turns, right drag orbits, middle drag pans");
     if (ImGui::Button("Frame the scene")) {
         actions.frameScene = true;
     }

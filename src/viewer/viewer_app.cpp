@@ -112,11 +112,67 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 
 // Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
 // ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
+// The orbit's and the pan's drags and the point they turn about or keep in view.
+struct OrbitControls {
+    ButtonDrag orbit{GLFW_MOUSE_BUTTON_RIGHT};
+    ButtonDrag pan{GLFW_MOUSE_BUTTON_MIDDLE};
+    glm::vec3 pivot{0.0f};
+};
+
+// The point under the cursor: where the ray through that pixel's centre hits the scene, or the
+// centre of the scene's bounds when it hits nothing.
+glm::vec3 pointUnderCursor(GLFWwindow* window, const LoadedScene& scene,
+                           const RenderSettings& settings, int framebufferWidth,
+                           int framebufferHeight) {
+    double x = 0.0, y = 0.0;
+    cursorInPixels(window, x, y);
+    int px = 0, py = 0;
+    if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, settings.width, settings.height,
+                         px, py)) {
+        const Ray ray = PrimaryRays(settings.camera, settings.width, settings.height)
+                            .through(static_cast<float>(px) + 0.5f, static_cast<float>(py) + 0.5f);
+        if (const Hit hit = closestHit(scene.bvh, ray); hit.found()) {
+            return ray.origin + hit.t * ray.direction;
+        }
+    }
+    const Aabb bounds = scene.scene.bounds();
+    return bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+}
+
+// The orbit (right drag, or Alt + left: about the point under the cursor at the press) and the
+// pan (middle drag: the point under the cursor follows it) applied to `settings`.
+void applyOrbitAndPan(const InputEvents& events, bool panelHasMouse, GLFWwindow* window,
+                      const LoadedScene& scene, int framebufferWidth, int framebufferHeight,
+                      OrbitControls& controls, RenderSettings& settings) {
+    constexpr double kOrbitDegreesPerPixel = 0.3;
+    const bool orbitStart = events.orbitPressed && !panelHasMouse;
+    const bool panStart = events.panPressed && !panelHasMouse;
+    if (orbitStart || panStart) {
+        controls.pivot =
+            pointUnderCursor(window, scene, settings, framebufferWidth, framebufferHeight);
+    }
+    double dx = 0.0, dy = 0.0;
+    if (controls.orbit.update(window, orbitStart, dx, dy) && (dx != 0.0 || dy != 0.0)) {
+        orbitCamera(settings.camera, controls.pivot,
+                    static_cast<float>(-dx * kOrbitDegreesPerPixel),
+                    static_cast<float>(dy * kOrbitDegreesPerPixel));
+    }
+    if (controls.pan.update(window, panStart, dx, dy) && (dx != 0.0 || dy != 0.0)) {
+        // World units per framebuffer pixel at the pivot's distance.
+        const float perPixel =
+            glm::length(controls.pivot - settings.camera.position) /
+            focalLengthPixels(settings.camera.verticalFovDegrees, std::max(framebufferHeight, 1));
+        panCamera(settings.camera, static_cast<float>(dx) * perPixel,
+                  static_cast<float>(dy) * perPixel);
+    }
+}
+
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
                 DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
                 bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys,
-                SettingsHistory& history, bool& quit) {
+                SettingsHistory& history, const LoadedScene& scene, OrbitControls& orbit,
+                bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -172,6 +228,8 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
             inspectWanted = true;
         }
     }
+    applyOrbitAndPan(events, io.WantCaptureMouse, window, scene, framebufferWidth,
+                     framebufferHeight, orbit, next);
     const bool press = events.leftPressed && !io.WantCaptureMouse;
     const bool onDivider =
         panel.split && dividerDrag.update(window, press, framebufferWidth, panel.divider);
@@ -299,6 +357,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     bool showPanel = options.showPanel;
     bool showKeys = false;                   // the list of keys and mouse gestures (H)
     SettingsHistory history(panel.settings); // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
+    OrbitControls orbit;                     // right drag orbits, middle drag pans
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
@@ -462,7 +521,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         bool inspectWanted = false;
         applyInput(input.take(), wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
-                   showKeys, history, quit);
+                   showKeys, history, *scene, orbit, quit);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
         // JSON (raylab-render --inspect's) on standard output when a click asks, for scripts.
         std::optional<PixelInspection> inspection;

@@ -84,5 +84,42 @@ TEST(Camera, LookAtPointsTheForwardAxisAtTheTarget) {
     EXPECT_EQ(camera.pitchDegrees, before.pitchDegrees);
 }
 
+TEST(Camera, OrbitKeepsTheDistanceAndLooksAtThePivot) {
+    Camera c;
+    c.position = {0.3f, 0.4f, -3.0f};
+    const glm::vec3 pivot(0.1f, -0.2f, 0.5f);
+    const float distance = glm::length(pivot - c.position);
+    orbitCamera(c, pivot, 30.0f, 10.0f);
+    EXPECT_NEAR(glm::length(pivot - c.position), distance, 1e-4f);
+    const glm::vec3 toPivot = glm::normalize(pivot - c.position);
+    EXPECT_NEAR(glm::dot(forwardOf(c), toPivot), 1.0f, 1e-5f);
+    // Round the pivot and back: where it started.
+    Camera round = c;
+    for (int i = 0; i < 12; ++i) {
+        orbitCamera(round, pivot, 30.0f, 0.0f);
+    }
+    EXPECT_NEAR(glm::length(round.position - c.position), 0.0f, 1e-3f);
+    // The pitch stops short of the pole.
+    orbitCamera(c, pivot, 0.0f, 500.0f);
+    EXPECT_LE(c.pitchDegrees, 85.0f + 1e-4f);
+    EXPECT_NEAR(glm::length(pivot - c.position), distance, 1e-4f);
+    // A camera at its pivot stays.
+    Camera at;
+    at.position = pivot;
+    orbitCamera(at, pivot, 10.0f, 10.0f);
+    EXPECT_EQ(at.position, pivot);
+}
+
+TEST(Camera, PanMovesAlongTheCamerasRightAndUp) {
+    Camera c;
+    c.yawDegrees = 40.0f;
+    const glm::vec3 start = c.position;
+    panCamera(c, 1.0f, 0.5f);
+    const glm::vec3 moved = c.position - start;
+    EXPECT_NEAR(glm::dot(moved, forwardOf(c)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(moved), std::sqrt(1.25f), 1e-5f);
+    EXPECT_EQ(c.yawDegrees, 40.0f);
+}
+
 } // namespace
 } // namespace raylab

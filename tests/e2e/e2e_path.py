@@ -163,3 +163,44 @@ def test_undo(env):
         viewer.quit()
     finally:
         viewer.kill()
+
+
+def test_orbit(env):
+    """A right drag orbits about the point under the cursor (the distance to it is kept, the camera
+    turns to keep looking at it); a middle drag pans (the camera moves, its direction stays)."""
+    size = ["--width", "480", "--height", "360"]
+    pivot = json.loads(env.run_ok(env.render, size + ["--inspect", "390,200"]).stdout)["point"]
+    viewer = Viewer(env, size + ["--spp", "2"])
+    try:
+        w = viewer.window
+        viewer.xdotool("mousemove", "--window", w, "390", "200", "mousedown", "3")
+        time.sleep(0.2)
+        viewer.xdotool("mousemove", "--window", w, "430", "180")
+        time.sleep(0.2)
+        viewer.xdotool("mouseup", "3")
+        time.sleep(0.3)
+        _, orbited = viewer.key_shot()
+        viewer.xdotool("mousemove", "--window", w, "400", "200", "mousedown", "2")
+        time.sleep(0.2)
+        viewer.xdotool("mousemove", "--window", w, "420", "220")
+        time.sleep(0.2)
+        viewer.xdotool("mouseup", "2")
+        time.sleep(0.3)
+        _, panned = viewer.key_shot()
+        viewer.quit()
+    finally:
+        viewer.kill()
+    start = [0, 0, -3]
+    position = orbited["camera"]["position"]
+    check(position != start, "the right drag did not move the camera")
+
+    def distance(a, b):
+        return sum((x - y) ** 2 for x, y in zip(a, b)) ** 0.5
+
+    check(abs(distance(position, pivot) - distance(start, pivot)) < 1e-3,
+          f"the orbit changed the distance to the pivot {pivot}: {distance(start, pivot)} -> "
+          f"{distance(position, pivot)}")
+    check(orbited["camera"]["yaw"] != 0, "the orbit did not turn the camera")
+    check(panned["camera"]["position"] != position, "the middle drag did not pan")
+    check((panned["camera"]["yaw"], panned["camera"]["pitch"]) ==
+          (orbited["camera"]["yaw"], orbited["camera"]["pitch"]), "the pan turned the camera")
