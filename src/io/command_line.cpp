@@ -512,6 +512,7 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
             return 1;
         }
         markGivenFromKeys(extras, result.given);
+        result.bookmarks = extras.bookmarks;
         if (!sceneGiven && !extras.scene.empty()) {
             result.scene = extras.scene;
         }

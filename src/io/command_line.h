@@ -8,6 +8,7 @@
 #include "core/render_settings.h"
 #include "core/scene.h"
 #include "core/scene_framing.h"
+#include "io/settings_json.h"
 
 #include <optional>
 #include <string>
@@ -40,6 +41,7 @@ struct CommandLine {
     std::string screenshot;          // --screenshot FILE: save the last shown frame
     std::string screenshotDir = "."; // --screenshot-dir DIR
     float split = -1.0f; // --split D: start with the A/B split, its divider at D in [0, 1]; < 0 off
+    CameraBookmarks bookmarks; // the viewer's, from the --settings file
     // bench
     bool json = false;   // --json
     int benchFrames = 5; // --frames N for the bench: best of N

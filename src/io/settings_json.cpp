@@ -126,6 +126,10 @@ public:
                               {"sampler", samplerKind(&work_.sampler)}});
             } else if (key == "emission") {
                 ok = section(key, value, {{"scale", number(&work_.emissionScale)}});
+            } else if (key == "bookmarks") {
+                if (!readBookmarks(value)) {
+                    return false;
+                }
             } else if (key == "split") {
                 if (!readSplit(value)) {
                     return false;
@@ -147,6 +151,50 @@ public:
     }
 
     const RenderSettings& result() const { return work_; }
+
+    // "bookmarks": [9 x (null | {"position": [x, y, z], "yaw": deg, "pitch": deg, "fov": deg})];
+    // each camera must be valid as a camera of the settings is.
+    bool readBookmarks(const Json& value) {
+        if (!value.is_array() || value.size() != 9) {
+            return fail("bookmarks", "must be an array of 9 cameras or nulls, got " + shown(value));
+        }
+        CameraBookmarks bookmarks;
+        for (std::size_t i = 0; i < 9; ++i) {
+            const Json& slot = value[i];
+            if (slot.is_null()) {
+                continue;
+            }
+            const std::string name = "bookmarks[" + std::to_string(i) + "]";
+            if (!slot.is_object()) {
+                return fail(name, "must be a camera or null, got " + shown(slot));
+            }
+            RenderSettings probe;
+            for (const auto& [key, child] : slot.items()) {
+                std::string why;
+                if (key == "position") {
+                    why = vec3(&probe.camera.position)(child);
+                } else if (key == "yaw") {
+                    why = asFloat(child, probe.camera.yawDegrees);
+                } else if (key == "pitch") {
+                    why = asFloat(child, probe.camera.pitchDegrees);
+                } else if (key == "fov") {
+                    why = asFloat(child, probe.camera.verticalFovDegrees);
+                } else {
+                    why = "unknown key";
+                }
+                if (!why.empty()) {
+                    return fail(name + "." + key, why);
+                }
+            }
+            if (std::string why = validate(probe); !why.empty()) {
+                return fail(name, why);
+            }
+            bookmarks.slots[i] = probe.camera;
+        }
+        extras_.bookmarks = bookmarks;
+        extras_.keys.insert("bookmarks");
+        return true;
+    }
 
     // "split": {"divider": number in [0, 1], "side": "left" | "right", "other": file name}.
     bool readSplit(const Json& value) {
@@ -347,6 +395,15 @@ bool readTextFile(const std::string& path, std::string& text, std::string& error
 
 } // namespace
 
+bool CameraBookmarks::any() const {
+    for (const std::optional<Camera>& c : slots) {
+        if (c) {
+            return true;
+        }
+    }
+    return false;
+}
+
 std::string settingsToJson(const RenderSettings& settings) {
     return toJson(settings).dump(2) + "\n";
 }
@@ -360,13 +417,32 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
 }
 
 std::string settingsToJson(const RenderSettings& settings, const std::string& scene,
-                           const SplitRecord& split) {
+                           const SettingsFileExtras& extras) {
     OrderedJson j = toJson(settings);
     if (!scene.empty()) {
         j["scene"] = scene;
     }
-    j["split"] = {
-        {"divider", shortFloat(split.divider)}, {"side", split.side}, {"other", split.other}};
+    if (extras.split) {
+        const SplitRecord& split = *extras.split;
+        j["split"] = {{"divider", shortFloat(split.divider)}, {"side", split.side}};
+        if (!split.other.empty()) {
+            j["split"]["other"] = split.other;
+        }
+    }
+    if (extras.bookmarks.any()) {
+        OrderedJson slots = OrderedJson::array();
+        for (const std::optional<Camera>& c : extras.bookmarks.slots) {
+            if (c) {
+                slots.push_back({{"position", vec3Json(c->position)},
+                                 {"yaw", shortFloat(c->yawDegrees)},
+                                 {"pitch", shortFloat(c->pitchDegrees)},
+                                 {"fov", shortFloat(c->verticalFovDegrees)}});
+            } else {
+                slots.push_back(nullptr);
+            }
+        }
+        j["bookmarks"] = std::move(slots);
+    }
     return j.dump(2) + "\n";
 }
 
@@ -440,8 +516,9 @@ bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
 }
 
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
-                      const std::string& scene, const SplitRecord& split, std::string& error) {
-    const std::string text = settingsToJson(settings, scene, split);
+                      const std::string& scene, const SettingsFileExtras& extras,
+                      std::string& error) {
+    const std::string text = settingsToJson(settings, scene, extras);
     return writeFileAtomically(
         path,
         [&text](std::FILE* file, std::string&) {

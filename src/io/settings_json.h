@@ -11,15 +11,18 @@
 //    "threads":  0,
 //    "display":  {"mode": "lab", "exposure": 0},
 //    "scene":    "cornell",                       <- optional; only written when asked for
-//    "split":    {"divider": 0.5, "side": "left", "other": "raylab-0001-right.json"}}
+//    "split":    {"divider": 0.5, "side": "left", "other": "raylab-0001-right.json"},
+//    "bookmarks": [null, {"position": [0, 0, -3], "yaw": 0, "pitch": 0, "fov": 53.13}, ...]}
 //                 <- optional: a screenshot of one side of the viewer's A/B split; these are that
-//                    side's settings, `other` names the file of the other side's
+//                    side's settings, `other` names the file of the other side's;
+//                 "bookmarks": the viewer's camera bookmarks, 9 slots (optional)
 // (also "integrator", "emission", a light's "radius" and the display's "view": see toJson).
 // Floats are written in the shortest form that reads back to the same float, so a save and a load
 // reproduce the settings bit for bit.
 
 #include "core/render_settings.h"
 
+#include <array>
 #include <optional>
 #include <set>
 #include <string>
@@ -40,11 +43,26 @@ struct SplitRecord {
     bool operator==(const SplitRecord&) const = default;
 };
 
+// The viewer's camera bookmarks (Ctrl+1..9 stores, 1..9 returns), kept in settings files as
+// "bookmarks": an array of 9, each null or {"position", "yaw", "pitch", "fov"}.
+struct CameraBookmarks {
+    std::array<std::optional<Camera>, 9> slots;
+    bool any() const;
+    bool operator==(const CameraBookmarks&) const = default;
+};
+
+// What a settings file holds besides the settings: a split record, bookmarks.
+struct SettingsFileExtras {
+    std::optional<SplitRecord> split;
+    CameraBookmarks bookmarks; // written only when some slot is set
+};
+
 // What a JSON text held besides the values.
 struct SettingsJsonExtras {
     std::set<std::string> keys;       // the leaf keys it gave, e.g. "camera.position", "threads"
     std::string scene;                // its "scene", or empty
     std::optional<SplitRecord> split; // its "split", if any
+    CameraBookmarks bookmarks;        // its "bookmarks", if any
 };
 
 // Reads JSON text over settings. Returns false with a one-line error naming the key, leaving
@@ -61,10 +79,11 @@ bool loadSettingsFile(const std::string& path, RenderSettings& settings, Setting
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings, std::string& error);
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
                       const std::string& scene, std::string& error);
-// The same with a "split" record (an empty scene writes no "scene" key).
+// The same with a file's extras (an empty scene writes no "scene" key).
 std::string settingsToJson(const RenderSettings& settings, const std::string& scene,
-                           const SplitRecord& split);
+                           const SettingsFileExtras& extras);
 bool saveSettingsFile(const std::string& path, const RenderSettings& settings,
-                      const std::string& scene, const SplitRecord& split, std::string& error);
+                      const std::string& scene, const SettingsFileExtras& extras,
+                      std::string& error);
 
 } // namespace raylab

@@ -17,6 +17,16 @@ InputCollector* collectorOf(GLFWwindow* window) {
 
 } // namespace
 
+std::optional<int> bookmarkForKey(int glfwKey) {
+    if (glfwKey >= GLFW_KEY_1 && glfwKey <= GLFW_KEY_9) {
+        return glfwKey - GLFW_KEY_1;
+    }
+    if (glfwKey >= GLFW_KEY_KP_1 && glfwKey <= GLFW_KEY_KP_9) {
+        return glfwKey - GLFW_KEY_KP_1;
+    }
+    return std::nullopt;
+}
+
 void cursorInPixels(GLFWwindow* window, double& x, double& y) {
     int windowWidth = 0, windowHeight = 0, pixelWidth = 0, pixelHeight = 0;
     glfwGetWindowSize(window, &windowWidth, &windowHeight);

@@ -88,6 +88,9 @@ std::optional<Command> commandForKey(int glfwKey);
 
 // The mouse drag that turns the camera: while the left button, pressed outside the panel, is
 // held, the point under the cursor follows the cursor (a drag to the right turns the camera left).
+// The camera bookmark slot of a key: 0..8 for the keys 1..9 (top row or keypad), else nullopt.
+std::optional<int> bookmarkForKey(int glfwKey);
+
 // The cursor in framebuffer pixels (screen coordinates scaled on high-DPI screens).
 void cursorInPixels(GLFWwindow* window, double& x, double& y);
 

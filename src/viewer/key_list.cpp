@@ -20,6 +20,7 @@ constexpr KeyHelp kKeys[] = {
     {"K", "keep the settings as snapshot A and compare live against it"},
     {"F (held)", "show the split's right side over the whole picture"},
     {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo, redo (a drag or a walk is one step)"},
+    {"Ctrl+1..9, 1..9", "keep the camera as a bookmark, return to it"},
     {"F12", "save a screenshot"},
     {"F1", "show / hide the panel"},
     {"H or ?", "show / hide this list"},

@@ -6,6 +6,7 @@
 
 #include "core/integrators/pixel_inspection.h"
 #include "core/render_settings.h"
+#include "io/settings_json.h"
 #include "panel_numbers.h"
 
 #include <array>
@@ -31,6 +32,7 @@ struct PanelState {
     // the split's right side shows A instead of the other integrator (splitCompare).
     std::optional<RenderSettings> snapshot;
     bool compareSnapshot = false;
+    CameraBookmarks bookmarks; // Ctrl+1..9 stores the camera, 1..9 returns to it
     // The pixel looked inside (Ctrl+click), in render pixels; its numbers are PanelView's.
     std::optional<std::array<int, 2>> inspected;
     std::string scenePath; // the path field

@@ -41,29 +41,47 @@ SplitRecord rightRecord(const ShownImage& shown, const std::string& path) {
     return {shown.divider, "right", std::filesystem::path(settingsPathFor(path)).filename()};
 }
 
-// `path` empty: the image's name is not known yet (the record names no other file).
-std::map<std::string, std::string> chunksFor(const ShownImage& shown, const std::string& path) {
-    SplitRecord record = leftRecord(shown, path.empty() ? "x.png" : path);
-    if (path.empty()) {
-        record.other.clear();
+// The extras of the left (or only) side's settings: the split record when the picture is split
+// (`path` empty: the image's name is not known yet, and the record names no other file) and the
+// bookmarks.
+SettingsFileExtras leftExtras(const ShownImage& shown, const std::string& path,
+                              const CameraBookmarks& bookmarks) {
+    SettingsFileExtras extras;
+    extras.bookmarks = bookmarks;
+    if (shown.compare) {
+        extras.split = leftRecord(shown, path.empty() ? "x.png" : path);
+        if (path.empty()) {
+            extras.split->other.clear();
+        }
     }
-    const std::string json = shown.compare ? settingsToJson(shown.settings, sceneOf(shown), record)
-                                           : settingsToJson(shown.settings, sceneOf(shown));
-    return {{kSettingsChunk, json}, {kSceneChunk, sceneOf(shown)}, {"Software", "raylab"}};
+    return extras;
+}
+
+std::map<std::string, std::string> chunksFor(const ShownImage& shown, const std::string& path,
+                                             const CameraBookmarks& bookmarks) {
+    return {{kSettingsChunk,
+             settingsToJson(shown.settings, sceneOf(shown), leftExtras(shown, path, bookmarks))},
+            {kSceneChunk, sceneOf(shown)},
+            {"Software", "raylab"}};
 }
 
 // The settings beside the image at `path`: its .json, and for a split picture the right side's
 // -right.json too. On failure removes what it wrote.
-bool saveSettingsFor(const std::string& path, const ShownImage& shown, std::string& error) {
+bool saveSettingsFor(const std::string& path, const ShownImage& shown,
+                     const CameraBookmarks& bookmarks, std::string& error) {
     const std::string json = settingsPathFor(path);
-    if (!shown.compare) {
-        return saveSettingsFile(json, shown.settings, sceneOf(shown), error);
-    }
-    if (!saveSettingsFile(json, shown.settings, sceneOf(shown), leftRecord(shown, path), error)) {
+    if (!saveSettingsFile(json, shown.settings, sceneOf(shown), leftExtras(shown, path, bookmarks),
+                          error)) {
         return false;
     }
-    if (!saveSettingsFile(rightSettingsPathFor(path), *shown.compare, sceneOf(shown),
-                          rightRecord(shown, path), error)) {
+    if (!shown.compare) {
+        return true;
+    }
+    SettingsFileExtras right;
+    right.split = rightRecord(shown, path);
+    right.bookmarks = bookmarks;
+    if (!saveSettingsFile(rightSettingsPathFor(path), *shown.compare, sceneOf(shown), right,
+                          error)) {
         std::remove(json.c_str());
         return false;
     }
@@ -78,9 +96,10 @@ std::string settingsPathFor(const std::string& path) {
     return std::filesystem::path(path).replace_extension(".json").string();
 }
 
-bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error) {
+bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error,
+                    const CameraBookmarks& bookmarks) {
     if (hasExtension(path, ".png")) {
-        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown, path))) {
+        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown, path, bookmarks))) {
             return false;
         }
     } else if (shown.linear.pixels.empty()) {
@@ -90,7 +109,7 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
                            error)) {
         return false;
     }
-    if (!saveSettingsFor(path, shown, error)) {
+    if (!saveSettingsFor(path, shown, bookmarks, error)) {
         std::remove(path.c_str());
         return false;
     }
@@ -98,7 +117,7 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
 }
 
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
-                            std::string& error) {
+                            std::string& error, const CameraBookmarks& bookmarks) {
     namespace fs = std::filesystem;
     const fs::path folder = dir.empty() ? fs::path(".") : fs::path(dir);
     // Written under a private name first; link(2) then gives it its final name only if that
@@ -106,7 +125,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
     const fs::path temporary =
         folder / (".raylab-screenshot-" + std::to_string(::getpid()) + ".png.tmp");
     // The PNG's own name is not known yet: its chunk's split record names no other file.
-    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown, ""))) {
+    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown, "", bookmarks))) {
         return false;
     }
     bool claimed = false;
@@ -135,7 +154,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
         }
         return false;
     }
-    if (!saveSettingsFor(path, shown, error)) {
+    if (!saveSettingsFor(path, shown, bookmarks, error)) {
         std::remove(path.c_str());
         return false;
     }

@@ -7,6 +7,7 @@
 // .json holds the left side's settings and a "split" record, a -right.json beside it the right
 // side's, so that raylab-render reproduces each side from its file.
 
+#include "io/settings_json.h"
 #include "shown_image.h"
 
 #include <string>
@@ -23,12 +24,14 @@ std::string settingsPathFor(const std::string& path);
 // text chunks; .pfm and .exr get ShownImage::linear (which must be there), each atomically
 // (temporary file and rename; a failure leaves no file). Overwrites existing files: the caller
 // chose the name.
-bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error);
+// `bookmarks`: the viewer's camera bookmarks, kept in the settings files.
+bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error,
+                    const CameraBookmarks& bookmarks = {});
 
 // Writes into `dir` under the first name raylab-0001.png, raylab-0002.png, ... whose .png and
 // .json are both free, never overwriting a file, even one another process creates meanwhile
 // (the name is claimed with link(2)). Sets `path` to the PNG written.
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
-                            std::string& error);
+                            std::string& error, const CameraBookmarks& bookmarks = {});
 
 } // namespace raylab::viewer

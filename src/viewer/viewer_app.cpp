@@ -177,6 +177,17 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
     for (const int key : events.keys) {
+        if (const auto slot = bookmarkForKey(key); slot && !io.WantCaptureKeyboard) {
+            const bool ctrl = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                              glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+            std::optional<Camera>& bookmark =
+                panel.bookmarks.slots[static_cast<std::size_t>(*slot)];
+            if (ctrl) {
+                bookmark = next.camera;
+            } else if (bookmark) {
+                next.camera = *bookmark;
+            }
+        }
         if (const auto command = commandForKey(key)) {
             if (*command == Command::Screenshot) {
                 ++screenshots;
@@ -353,6 +364,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.scenePath = scene->source;
     panel.resolutionScale = options.resolutionScale;
     panel.split = command.split >= 0.0f;
+    panel.bookmarks = command.bookmarks;
     panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
     bool showKeys = false;                   // the list of keys and mouse gestures (H)
@@ -618,7 +630,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         if (screenshots > 0 && current) {
             std::string path;
-            if (saveNumberedScreenshot(command.screenshotDir, shown, path, error)) {
+            if (saveNumberedScreenshot(command.screenshotDir, shown, path, error,
+                                       panel.bookmarks)) {
                 setStatus(panel, "saved " + path, false);
             } else {
                 setStatus(panel, "screenshot not saved: " + error, true);
@@ -692,7 +705,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     }
     if (!command.screenshot.empty()) {
         if (shown.bgra.width > 0 && !shown.preview) {
-            if (!saveScreenshot(command.screenshot, shown, error)) {
+            if (!saveScreenshot(command.screenshot, shown, error, panel.bookmarks)) {
                 std::fprintf(stderr, "raylab: %s\n", error.c_str());
                 exitCode = 1;
             }

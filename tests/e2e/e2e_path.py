@@ -204,3 +204,30 @@ def test_orbit(env):
     check(panned["camera"]["position"] != position, "the middle drag did not pan")
     check((panned["camera"]["yaw"], panned["camera"]["pitch"]) ==
           (orbited["camera"]["yaw"], orbited["camera"]["pitch"]), "the pan turned the camera")
+
+
+def test_bookmarks(env):
+    """Ctrl+1 keeps the camera in slot 1 and 1 returns to it; the screenshot's settings keep the
+    bookmarks, and a viewer started with those settings has them."""
+    viewer = Viewer(env, ["--width", "240", "--height", "180", "--spp", "2"])
+    try:
+        viewer.xdotool("key", "--delay", "80", "ctrl+1")
+        _, moved = viewer.key_shot("Up", "Up")
+        check(moved["camera"]["position"] != [0, 0, -3], "Up did not move the camera")
+        _, back = viewer.key_shot("1")
+        check(back["camera"]["position"] == [0, 0, -3],
+              f"1 did not return to the bookmark: {back['camera']['position']}")
+        check(back["bookmarks"][0]["position"] == [0, 0, -3] and back["bookmarks"][1] is None,
+              f"the screenshot's bookmarks: {back.get('bookmarks')}")
+        viewer.quit()
+    finally:
+        viewer.kill()
+    saved = viewer.screenshots()[-1][:-4] + ".json"
+    viewer = Viewer(env, ["--settings", saved, "--spp", "2"])
+    try:
+        viewer.key_shot("Up", "Up")
+        _, back = viewer.key_shot("1")
+        check(back["camera"]["position"] == [0, 0, -3], "the loaded bookmark did not work")
+        viewer.quit()
+    finally:
+        viewer.kill()

@@ -90,7 +90,9 @@ TEST(SplitView, ASnapshotComparesAtTheLivePicturesSize) {
 
 TEST(SplitView, SettingsFilesRecordTheirSide) {
     RenderSettings s;
-    const std::string text = settingsToJson(s, "cornell", SplitRecord{0.25f, "right", "a.json"});
+    SettingsFileExtras file;
+    file.split = SplitRecord{0.25f, "right", "a.json"};
+    const std::string text = settingsToJson(s, "cornell", file);
     RenderSettings read;
     SettingsJsonExtras extras;
     std::string error;
@@ -102,6 +104,33 @@ TEST(SplitView, SettingsFilesRecordTheirSide) {
     EXPECT_NE(error.find("split.divider"), std::string::npos) << error;
     EXPECT_FALSE(settingsFromJson(R"({"split": {"side": "middle"}})", read, extras, error));
     EXPECT_NE(error.find("split.side"), std::string::npos) << error;
+}
+
+TEST(SettingsFiles, CameraBookmarksRoundTripAndBadOnesAreRefused) {
+    SettingsFileExtras file;
+    Camera c;
+    c.position = {0.1f, 0.2f, -2.5f};
+    c.yawDegrees = 12.5f;
+    c.pitchDegrees = -3.0f;
+    c.verticalFovDegrees = 40.0f;
+    file.bookmarks.slots[0] = c;
+    file.bookmarks.slots[8] = Camera();
+    const std::string text = settingsToJson(RenderSettings(), "cornell", file);
+    RenderSettings read;
+    SettingsJsonExtras extras;
+    std::string error;
+    ASSERT_TRUE(settingsFromJson(text, read, extras, error)) << error;
+    EXPECT_EQ(extras.bookmarks, file.bookmarks);
+    EXPECT_FALSE(extras.bookmarks.slots[4].has_value());
+    // Without any, no key is written.
+    EXPECT_EQ(settingsToJson(RenderSettings(), "cornell", SettingsFileExtras{}).find("bookmarks"),
+              std::string::npos);
+    EXPECT_FALSE(settingsFromJson(R"({"bookmarks": [null]})", read, extras, error));
+    EXPECT_NE(error.find("bookmarks"), std::string::npos) << error;
+    EXPECT_FALSE(settingsFromJson(
+        R"({"bookmarks": [{"fov": 200}, null, null, null, null, null, null, null, null]})", read,
+        extras, error));
+    EXPECT_NE(error.find("bookmarks[0]"), std::string::npos) << error;
 }
 
 std::shared_ptr<const LoadedScene> labBox() {
