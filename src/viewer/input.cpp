@@ -61,6 +61,7 @@ void InputCollector::attach(GLFWwindow* window) {
     glfwSetFramebufferSizeCallback(window, &InputCollector::onSize);
     glfwSetWindowRefreshCallback(window, &InputCollector::onRefresh);
     glfwSetWindowIconifyCallback(window, &InputCollector::onIconify);
+    glfwSetDropCallback(window, &InputCollector::onDrop);
 }
 
 InputEvents InputCollector::take() {
@@ -114,6 +115,14 @@ void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, i
         events.orbitPressed = true;
     } else if (button == GLFW_MOUSE_BUTTON_MIDDLE) {
         events.panPressed = true;
+    }
+}
+
+void InputCollector::onDrop(GLFWwindow* window, int count, const char** paths) {
+    InputEvents& events = collectorOf(window)->events_;
+    events.other = true;
+    for (int i = 0; i < count; ++i) {
+        events.dropped.emplace_back(paths[i]);
     }
 }
 

@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <optional>
+#include <string>
 #include <vector>
 
 struct GLFWwindow;
@@ -45,6 +46,7 @@ struct InputEvents {
     // GLFW key codes of the presses and repeats of the keys that do not navigate, in order.
     std::vector<int> keys;
     std::vector<NavKeyChange> navKeys; // the navigation keys' changes, in order; no repeats
+    std::vector<std::string> dropped;  // paths dropped on the window, in order
     double scroll = 0.0;               // wheel notches, positive = away from the user
     bool leftPressed = false;          // the left button went down
     bool inspectPressed = false;       // ... with Ctrl held: look inside the pixel under it
@@ -78,6 +80,7 @@ private:
     static void onSize(GLFWwindow* window, int width, int height);
     static void onRefresh(GLFWwindow* window);
     static void onIconify(GLFWwindow* window, int iconified);
+    static void onDrop(GLFWwindow* window, int count, const char** paths);
     InputEvents events_;
 };
 

@@ -161,4 +161,30 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
     return true;
 }
 
+bool isScreenshotPath(const std::string& path) {
+    return hasExtension(path, ".png") || hasExtension(path, ".json");
+}
+
+bool readScreenshotSettings(const std::string& path, RenderSettings& settings,
+                            SettingsJsonExtras& extras, std::string& error) {
+    if (hasExtension(path, ".json")) {
+        return loadSettingsFile(path, settings, extras, error);
+    }
+    Rgba8Image image;
+    std::map<std::string, std::string> chunks;
+    if (!readPng(path, image, error, &chunks)) {
+        return false;
+    }
+    const auto chunk = chunks.find(kSettingsChunk);
+    if (chunk == chunks.end()) {
+        error = path + ": not a raylab screenshot (no " + kSettingsChunk + " chunk)";
+        return false;
+    }
+    if (!settingsFromJson(chunk->second, settings, extras, error)) {
+        error = path + ": " + error;
+        return false;
+    }
+    return true;
+}
+
 } // namespace raylab::viewer

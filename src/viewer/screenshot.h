@@ -34,4 +34,14 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
                             std::string& error, const CameraBookmarks& bookmarks = {});
 
+// Reads the settings a raylab screenshot was taken with: a .json beside it, or its .png's
+// "raylab-settings" chunk, over `settings` (its scene and bookmarks into `extras`). False with a
+// one-line error naming the file for anything else (a PNG without the chunk is not a raylab
+// screenshot).
+bool readScreenshotSettings(const std::string& path, RenderSettings& settings,
+                            SettingsJsonExtras& extras, std::string& error);
+
+// Whether a path names a screenshot's settings (.png or .json) rather than a mesh.
+bool isScreenshotPath(const std::string& path);
+
 } // namespace raylab::viewer

@@ -367,9 +367,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.bookmarks = command.bookmarks;
     panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
-    bool showKeys = false;                   // the list of keys and mouse gestures (H)
-    SettingsHistory history(panel.settings); // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
-    OrbitControls orbit;                     // right drag orbits, middle drag pans
+    bool showKeys = false;                        // the list of keys and mouse gestures (H)
+    SettingsHistory history(panel.settings);      // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
+    OrbitControls orbit;                          // right drag orbits, middle drag pans
+    std::string pendingDrop = options.drop;       // --drop FILE, dropped once the window shows
+    std::optional<RenderSettings> pendingRestore; // a dropped screenshot's, for its scene
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
@@ -467,7 +469,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 scene = loaded->scene;
                 step = navigationStep(scene->scene.bounds());
                 maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
-                placeForScene(scene->scene, isLabBox(*scene), panel.settings);
+                if (pendingRestore) {
+                    panel.settings = *pendingRestore; // a dropped screenshot's own settings
+                } else {
+                    placeForScene(scene->scene, isLabBox(*scene), panel.settings);
+                }
                 glfwSetWindowTitle(window.handle(), ("raylab - " + scene->source).c_str());
                 setStatus(panel,
                           "loaded " + scene->source +
@@ -476,6 +482,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             } else {
                 setStatus(panel, loaded->error, true);
             }
+            pendingRestore.reset();
             schedule.want(wokeAt);
         }
 
@@ -531,7 +538,44 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         bool meanIndirectWanted = false;
         bool inspectWanted = false;
-        applyInput(input.take(), wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
+        InputEvents events = input.take();
+        if (!pendingDrop.empty() && framesShown > 0) {
+            events.dropped.push_back(pendingDrop); // --drop: as if dropped once the window shows
+            pendingDrop.clear();
+        }
+        // A dropped mesh opens; a dropped screenshot (.png or .json) restores its scene, settings,
+        // size and bookmarks.
+        for (const std::string& path : events.dropped) {
+            if (!isScreenshotPath(path)) {
+                panel.scenePath = path;
+                if (!loader.start(path)) {
+                    setStatus(panel, "a scene is loading already", true);
+                }
+                continue;
+            }
+            RenderSettings restored;
+            SettingsJsonExtras extras;
+            std::string why;
+            if (!readScreenshotSettings(path, restored, extras, why)) {
+                setStatus(panel, why, true);
+                continue;
+            }
+            panel.bookmarks = extras.bookmarks;
+            panel.resolutionScale = 1.0f;
+            glfwSetWindowSize(window.handle(), restored.width, restored.height);
+            const std::string restoredScene = extras.scene.empty() ? scene->source : extras.scene;
+            if (restoredScene == scene->source) {
+                panel.settings = restored;
+            } else if (loader.start(restoredScene)) {
+                pendingRestore = restored; // applied when the scene has loaded
+                panel.scenePath = restoredScene;
+            } else {
+                setStatus(panel, "a scene is loading already", true);
+                continue;
+            }
+            setStatus(panel, "restored " + path, false);
+        }
+        applyInput(events, wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
                    showKeys, history, *scene, orbit, quit);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as

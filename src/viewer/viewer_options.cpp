@@ -36,6 +36,12 @@ int parseViewerOptions(int argc, const char* const* argv, ViewerOptions& options
                 return 2;
             }
             options.readback = argv[++i];
+        } else if (i > 0 && arg == "--drop") {
+            if (i + 1 >= argc) {
+                error = "--drop needs a file name";
+                return 2;
+            }
+            options.drop = argv[++i];
         } else if (i > 0 && arg == "--stats") {
             if (i + 1 >= argc) {
                 error = "--stats needs a file name";
@@ -86,13 +92,18 @@ std::string viewerUsage() {
            "                     back from the GL framebuffer) of the last frame as PNG\n"
            "  --stats FILE       on quitting, write the window's frame rate and the tracer's pass\n"
            "                     times (JSON) to FILE\n"
+           "  --drop FILE        once the window shows, act as if FILE were dropped on it (a mesh\n"
+           "                     opens; a raylab screenshot's .png or .json restores it)\n"
            "The sample cap is --spp (default " +
            std::to_string(kDefaultSampleCap) +
            "). With --frames N and --screenshot or --readback, the viewer shows at least N frames\n"
            "and keeps going until the picture has reached the sample cap, then saves and quits.\n"
            "Keys: Up/Down move, Left/Right turn, W/S A/D Q/E move the light, mouse drag turns,\n"
-           "wheel moves, F12 screenshot, F1 panel, Escape quits. A key press moves one step; a\n"
-           "key held longer than 0.25 s moves smoothly, 25 steps a second, until released.\n";
+           "wheel moves, F12 screenshot, F1 panel, Escape quits; H in the window lists every key.\n"
+           "A key press moves one step; a key held longer than 0.25 s moves smoothly, 25 steps a\n"
+           "second, until released. Dropping a mesh file on the window opens it; dropping a "
+           "raylab\n"
+           "screenshot (.png or .json) restores its scene and settings.\n";
 }
 
 } // namespace raylab::viewer

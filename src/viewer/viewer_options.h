@@ -23,6 +23,7 @@ struct ViewerOptions {
     std::string readback;         // --readback FILE: test mode, see viewer_app.h
     float resolutionScale = 1.0f; // --resolution-scale S in [0.1, 1]: render size = window * S
     std::string stats;            // --stats FILE: frame rates and pass times at exit (run_stats.h)
+    std::string drop; // --drop FILE: acts as FILE dropped on the window (scripts, tests)
 };
 
 // Returns 0 on success; 2 with a one-line error for usage errors; 1 for an unreadable --settings

@@ -5,7 +5,7 @@ import json
 import struct
 import time
 
-from e2e_support import Viewer, check
+from e2e_support import Viewer, check, same_pixels
 from pngread import read_png
 
 SIZE = ["--width", "200", "--height", "200"]  # square: every ray of the lab's camera hits the box
@@ -231,3 +231,39 @@ def test_bookmarks(env):
         viewer.quit()
     finally:
         viewer.kill()
+
+
+def test_drop(env):
+    """Dropping a raylab screenshot (its PNG or its JSON) restores its scene, settings and size
+    exactly; dropping a mesh opens it; a PNG that is no raylab screenshot is refused in the panel
+    and the viewer goes on (drops driven by --drop, which feeds the window's drop handling)."""
+    env.run_ok(env.raylab, ["--width", "200", "--height", "150", "--yaw", "10", "--light-power",
+                            "9", "--spp", "2", "--no-panel", "--frames", "5", "--screenshot",
+                            "a.png"])
+    original = json.load(open(env.path("a.json")))
+    for dropped in ("a.png", "a.json"):
+        shot = f"b-{dropped}.png"
+        env.run_ok(env.raylab, ["--width", "320", "--height", "240", "--spp", "2", "--no-panel",
+                                "--drop", env.path(dropped), "--frames", "30", "--screenshot",
+                                shot])
+        restored = json.load(open(env.path(shot[:-4] + ".json")))
+        for part in ("camera", "light", "image", "indirect", "shadows"):
+            check(restored[part] == original[part],
+                  f"dropping {dropped}: {part} {restored[part]} != {original[part]}")
+        same_pixels(read_png(env.path("a.png")), read_png(env.path(shot)),
+                    f"the picture restored from {dropped}")
+    with open(env.path("tri.obj"), "w") as f:
+        f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    env.run_ok(env.raylab, ["--width", "160", "--height", "120", "--spp", "1", "--no-panel",
+                            "--drop", env.path("tri.obj"), "--frames", "30", "--screenshot",
+                            "c.png"])
+    opened = json.load(open(env.path("c.json")))
+    check(opened["scene"] == env.path("tri.obj"), f"the dropped mesh was not opened: {opened}")
+    with open(env.path("plain.png"), "wb") as f:
+        f.write(open(env.path("a.png"), "rb").read()[:8] + b"garbage")
+    result = env.run(env.raylab, ["--width", "160", "--height", "120", "--spp", "1", "--no-panel",
+                                  "--drop", env.path("plain.png"), "--frames", "20",
+                                  "--screenshot", "d.png"])
+    check(result.returncode == 0, f"a bad drop ended the viewer: {result.stderr}")
+    check("plain.png" in result.stderr, f"no message about the bad drop: {result.stderr}")
+    check(json.load(open(env.path("d.json")))["scene"] == "cornell", "a bad drop changed the scene")

@@ -23,8 +23,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_panel import test_panel  # noqa: E402
-from e2e_path import (test_bookmarks, test_inspect, test_mean_n, test_orbit,  # noqa: E402
-                      test_snapshot, test_split, test_undo)
+from e2e_path import (test_bookmarks, test_drop, test_inspect, test_mean_n,  # noqa: E402
+                      test_orbit, test_snapshot, test_split, test_undo)
 from e2e_scene_path import test_scene_path  # noqa: E402
 from e2e_stats import test_idle, test_stats  # noqa: E402
 from e2e_support import (PANEL_BUTTON, Env, Failure, Viewer, check, close,  # noqa: E402
@@ -314,6 +314,7 @@ TESTS = {
     "undo": (test_undo, True),
     "orbit": (test_orbit, True),
     "bookmarks": (test_bookmarks, True),
+    "drop": (test_drop, True),
 }
 
 
