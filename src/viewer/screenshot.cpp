@@ -136,6 +136,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
         const fs::path json = folder / (std::string(name) + ".json");
         std::error_code ignored;
         if (fs::exists(json, ignored) ||
+            fs::exists(folder / (std::string(name) + ".exr"), ignored) ||
             (shown.compare && fs::exists(rightSettingsPathFor(png.string()), ignored))) {
             continue;
         }
@@ -157,6 +158,16 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
     if (!saveSettingsFor(path, shown, bookmarks, error)) {
         std::remove(path.c_str());
         return false;
+    }
+    // The linear picture beside it, when the picture came with one.
+    if (!shown.linear.pixels.empty()) {
+        const std::string exr = std::filesystem::path(path).replace_extension(".exr").string();
+        if (!writeExr(exr, shown.linear, error)) {
+            std::remove(path.c_str());
+            std::remove(settingsPathFor(path).c_str());
+            std::remove(rightSettingsPathFor(path).c_str());
+            return false;
+        }
     }
     return true;
 }

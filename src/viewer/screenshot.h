@@ -28,8 +28,9 @@ std::string settingsPathFor(const std::string& path);
 bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error,
                     const CameraBookmarks& bookmarks = {});
 
-// Writes into `dir` under the first name raylab-0001.png, raylab-0002.png, ... whose .png and
-// .json are both free, never overwriting a file, even one another process creates meanwhile
+// Writes into `dir` under the first name raylab-0001.png, raylab-0002.png, ... whose .png, .json
+// (and .exr) are free, with the linear picture as raylab-NNNN.exr when ShownImage::linear holds
+// it, never overwriting a file, even one another process creates meanwhile
 // (the name is claimed with link(2)). Sets `path` to the PNG written.
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
                             std::string& error, const CameraBookmarks& bookmarks = {});

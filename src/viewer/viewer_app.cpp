@@ -395,8 +395,10 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                             std::filesystem::path(command.screenshot).extension() != ".png";
     const bool needsFinal = !command.screenshot.empty() || !options.readback.empty();
     // Hands the panel's settings to the render thread when they make another job than the last.
+    // F12 writes the linear picture (.exr) beside the PNG: while a screenshot waits, the job
+    // asks for the linear picture too (a republish of the same samples, no new pass).
     const auto submitSettings = [&] {
-        RenderJob job{scene, panel.settings, keepLinear};
+        RenderJob job{scene, panel.settings, keepLinear || screenshots > 0};
         if (panel.split) {
             const RenderSettings* snapshot =
                 panel.compareSnapshot && panel.snapshot ? &*panel.snapshot : nullptr;
@@ -405,7 +407,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             job.divider =
                 glfwGetKey(window.handle(), GLFW_KEY_F) == GLFW_PRESS ? 0.0f : panel.divider;
         }
-        if (submittedSerial == 0 || !sameJob(job, submitted)) {
+        if (submittedSerial == 0 || !sameJob(job, submitted) ||
+            job.keepLinear != submitted.keepLinear) {
             submittedSerial = worker.submit(job);
             submitted = job;
         }
@@ -672,7 +675,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             drawPixelMarker((*panel.inspected)[0], (*panel.inspected)[1], panel.settings.width,
                             panel.settings.height, fbWidth, fbHeight);
         }
-        if (screenshots > 0 && current) {
+        if (screenshots > 0 && current && !shown.linear.pixels.empty()) {
             std::string path;
             if (saveNumberedScreenshot(command.screenshotDir, shown, path, error,
                                        panel.bookmarks)) {

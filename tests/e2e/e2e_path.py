@@ -2,6 +2,7 @@
 constant N to the path-traced picture's mean N, which raylab-render's indirect view confirms)."""
 
 import json
+import os
 import struct
 import time
 
@@ -43,6 +44,16 @@ def test_mean_n(env):
     check(indirect["enabled"], "N did not turn the indirect term on")
     n = [c * indirect["intensity"] for c in indirect["color"]]
     check(max(n) < 0.45, f"the mean N {n} is still the lab's 0.5")
+
+    # F12 wrote the linear picture beside the PNG: raylab-render with the screenshot's settings
+    # measures it as exactly its own picture (relative RMSE 0 at the last sample).
+    shot = viewer.screenshots()[-1]
+    exr = shot[:-4] + ".exr"
+    check(os.path.exists(exr), f"no linear picture beside {shot}")
+    lines = env.run_ok(env.render, ["--settings", shot[:-4] + ".json", "--reference", exr,
+                                    "-o", "again.pfm"]).stdout.strip().splitlines()
+    check(lines and "relative RMSE 0.000000" in lines[-1],
+          f"the .exr beside the screenshot is not its picture: {lines[-1:]}")
 
     env.run_ok(env.render, flags + ["--view", "indirect", "-o", "n.pfm"])
     width, height, rows = read_pfm(env.path("n.pfm"))
