@@ -6,6 +6,7 @@
 #include "core/render/renderer.h"
 #include "io/settings_json.h"
 #include "render_worker.h"
+#include "render_worker_support.h"
 #include "split_view.h"
 
 #include <chrono>
@@ -133,27 +134,8 @@ TEST(SettingsFiles, CameraBookmarksRoundTripAndBadOnesAreRefused) {
     EXPECT_NE(error.find("bookmarks[0]"), std::string::npos) << error;
 }
 
-std::shared_ptr<const LoadedScene> labBox() {
-    auto loaded = std::make_shared<LoadedScene>();
-    loaded->source = "cornell";
-    loaded->scene = makeCornellBox();
-    loaded->bvh = buildBvh(loaded->scene);
-    return loaded;
-}
-
-ShownImage waitFinal(RenderWorker& worker, uint64_t serial) {
-    ShownImage shown;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (std::chrono::steady_clock::now() < deadline) {
-        worker.takeLatest(shown);
-        if (shown.jobSerial == serial && shown.final && !shown.preview) {
-            return shown;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    ADD_FAILURE() << "no final picture within 60 s";
-    return shown;
-}
+using test::labBox;
+using test::waitFinal;
 
 std::vector<uint8_t> displayed(const LoadedScene& loaded, const RenderSettings& settings) {
     const Framebuffer image = render(loaded.scene, loaded.bvh, settings);

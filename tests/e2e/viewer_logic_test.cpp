@@ -8,6 +8,7 @@
 #include "io/settings_json.h"
 #include "navigation.h"
 #include "render_worker.h"
+#include "render_worker_support.h"
 #include "screenshot.h"
 #include "settings_edit.h"
 
@@ -23,14 +24,6 @@
 namespace raylab::viewer {
 namespace {
 
-std::shared_ptr<const LoadedScene> labBox() {
-    auto loaded = std::make_shared<LoadedScene>();
-    loaded->source = "cornell";
-    loaded->scene = makeCornellBox();
-    loaded->bvh = buildBvh(loaded->scene);
-    return loaded;
-}
-
 RenderSettings smallSettings(int samples) {
     RenderSettings s;
     s.width = 64;
@@ -40,20 +33,8 @@ RenderSettings smallSettings(int samples) {
     return s;
 }
 
-// Waits (at most 30 s) for a final picture of job `serial`.
-ShownImage waitFinal(RenderWorker& worker, uint64_t serial) {
-    ShownImage shown;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-    while (std::chrono::steady_clock::now() < deadline) {
-        worker.takeLatest(shown);
-        if (shown.jobSerial == serial && shown.final && !shown.preview) {
-            return shown;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    ADD_FAILURE() << "no final picture within 30 s";
-    return shown;
-}
+using test::labBox;
+using test::waitFinal;
 
 std::vector<uint8_t> reference(const LoadedScene& loaded, const RenderSettings& settings) {
     const Framebuffer image = render(loaded.scene, loaded.bvh, settings);
