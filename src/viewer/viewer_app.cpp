@@ -12,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include "core/integrators/pixel_inspection.h"
 #include "core/scene_framing.h"
+#include "gl_overlay.h"
 #include "gl_window.h"
 #include "held_keys.h"
 #include "image_quad.h"
@@ -19,6 +20,7 @@
 #include "io/inspection_json.h"
 #include "key_list.h"
 #include "key_relay.h"
+#include "orbit_controls.h"
 #include "panel.h"
 #include "panel_cache.h"
 #include "panel_context.h"
@@ -112,61 +114,6 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 
 // Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
 // ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
-// The orbit's and the pan's drags and the point they turn about or keep in view.
-struct OrbitControls {
-    ButtonDrag orbit{GLFW_MOUSE_BUTTON_RIGHT};
-    ButtonDrag pan{GLFW_MOUSE_BUTTON_MIDDLE};
-    glm::vec3 pivot{0.0f};
-};
-
-// The point under the cursor: where the ray through that pixel's centre hits the scene, or the
-// centre of the scene's bounds when it hits nothing.
-glm::vec3 pointUnderCursor(GLFWwindow* window, const LoadedScene& scene,
-                           const RenderSettings& settings, int framebufferWidth,
-                           int framebufferHeight) {
-    double x = 0.0, y = 0.0;
-    cursorInPixels(window, x, y);
-    int px = 0, py = 0;
-    if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, settings.width, settings.height,
-                         px, py)) {
-        const Ray ray = PrimaryRays(settings.camera, settings.width, settings.height)
-                            .through(static_cast<float>(px) + 0.5f, static_cast<float>(py) + 0.5f);
-        if (const Hit hit = closestHit(scene.bvh, ray); hit.found()) {
-            return ray.origin + hit.t * ray.direction;
-        }
-    }
-    const Aabb bounds = scene.scene.bounds();
-    return bounds.empty() ? glm::vec3(0.0f) : bounds.center();
-}
-
-// The orbit (right drag, or Alt + left: about the point under the cursor at the press) and the
-// pan (middle drag: the point under the cursor follows it) applied to `settings`.
-void applyOrbitAndPan(const InputEvents& events, bool panelHasMouse, GLFWwindow* window,
-                      const LoadedScene& scene, int framebufferWidth, int framebufferHeight,
-                      OrbitControls& controls, RenderSettings& settings) {
-    constexpr double kOrbitDegreesPerPixel = 0.3;
-    const bool orbitStart = events.orbitPressed && !panelHasMouse;
-    const bool panStart = events.panPressed && !panelHasMouse;
-    if (orbitStart || panStart) {
-        controls.pivot =
-            pointUnderCursor(window, scene, settings, framebufferWidth, framebufferHeight);
-    }
-    double dx = 0.0, dy = 0.0;
-    if (controls.orbit.update(window, orbitStart, dx, dy) && (dx != 0.0 || dy != 0.0)) {
-        orbitCamera(settings.camera, controls.pivot,
-                    static_cast<float>(-dx * kOrbitDegreesPerPixel),
-                    static_cast<float>(dy * kOrbitDegreesPerPixel));
-    }
-    if (controls.pan.update(window, panStart, dx, dy) && (dx != 0.0 || dy != 0.0)) {
-        // World units per framebuffer pixel at the pivot's distance.
-        const float perPixel =
-            glm::length(controls.pivot - settings.camera.position) /
-            focalLengthPixels(settings.camera.verticalFovDegrees, std::max(framebufferHeight, 1));
-        panCamera(settings.camera, static_cast<float>(dx) * perPixel,
-                  static_cast<float>(dy) * perPixel);
-    }
-}
-
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
                 DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
@@ -287,44 +234,6 @@ bool useMeanIndirect(const PictureFacts& picture, RenderSettings& settings) {
     splitColourIntensity(picture.meanIndirect, next.indirectColor, next.indirectIntensity);
     std::string ignored;
     return acceptEdit(next, settings, ignored);
-}
-
-// The split's divider: a white line two pixels wide over the picture at framebuffer column x
-// (drawn by GL over the quad, never into the traced picture or its screenshots).
-void drawDivider(int x, int framebufferHeight) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(std::max(x - 1, 0), 0, 2, framebufferHeight);
-    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
-}
-
-// A square outline around the inspected pixel (px, py) of a width x height picture shown over
-// the whole framebuffer, drawn by GL over the quad.
-void drawPixelMarker(int px, int py, int width, int height, int framebufferWidth,
-                     int framebufferHeight) {
-    const int x0 = px * framebufferWidth / width;
-    const int x1 = (px + 1) * framebufferWidth / width;
-    const int top = py * framebufferHeight / height;
-    const int bottom = (py + 1) * framebufferHeight / height;
-    // GL's rows count from the bottom.
-    const int y0 = framebufferHeight - bottom;
-    const int size = std::max(x1 - x0, bottom - top) + 8;
-    const int cx = (x0 + x1) / 2;
-    const int cy = y0 + (bottom - top) / 2;
-    glEnable(GL_SCISSOR_TEST);
-    glClearColor(1.0f, 0.2f, 0.8f, 1.0f);
-    const int left = cx - size / 2;
-    const int low = cy - size / 2;
-    const int rects[4][4] = {{left, low, size, 2},
-                             {left, low + size - 2, size, 2},
-                             {left, low, 2, size},
-                             {left + size - 2, low, 2, size}};
-    for (const auto& r : rects) {
-        glScissor(std::max(r[0], 0), std::max(r[1], 0), r[2], r[3]);
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
-    glDisable(GL_SCISSOR_TEST);
 }
 
 void setStatus(PanelState& panel, const std::string& text, bool isError) {
