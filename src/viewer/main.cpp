@@ -6,12 +6,17 @@
 #include "viewer_app.h"
 #include "viewer_options.h"
 
+#include <csignal>
 #include <cstdio>
 #include <string>
 
 int main(int argc, char** argv) {
     using namespace raylab;
     using namespace raylab::viewer;
+    // A write to a closed pipe or socket (stdout piped into a program that ended, an X server
+    // that went away) fails with EPIPE and is reported (Xlib prints which server and exits)
+    // instead of killing the viewer without a word.
+    std::signal(SIGPIPE, SIG_IGN);
     ViewerOptions options;
     std::string error;
     if (const int status = parseViewerOptions(argc, argv, options, error); status != 0) {

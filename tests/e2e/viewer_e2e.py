@@ -5,8 +5,8 @@ Mesa's software OpenGL (llvmpipe), driven with xdotool.
     viewer_e2e.py TEST --raylab PATH --render PATH
 
 runs one test (see TESTS) and exits 0 when it passes, 1 when it fails, and 77 (ctest's skip code
-here) when it needs a window and xvfb-run is not installed. Tests that need a window re-run
-themselves inside `xvfb-run -a`.
+here) when it needs a window and Xvfb is not installed. Tests that need a window run on an Xvfb
+display of their own (e2e_display.py).
 """
 
 import argparse
@@ -20,6 +20,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from e2e_display import Display, DisplayError  # noqa: E402
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_panel import test_panel  # noqa: E402
@@ -31,7 +32,6 @@ from e2e_support import (PANEL_BUTTON, Env, Failure, Viewer, check, close,  # no
                          distinct_colours, same_pixels, vec)
 
 SKIP = 77
-XVFB_SERVER_ARGS = "-screen 0 1280x800x24"
 STEP = 0.1  # core's navigationStep for the lab's box
 TURN_DEGREES = 5.0  # the viewer's kTurnStepDegrees
 HOLD_DELAY = 0.25  # the viewer's kHoldDelaySeconds: a held key moves smoothly from then on
@@ -318,44 +318,40 @@ TESTS = {
 }
 
 
+def run_test(function, name, raylab, render):
+    os.environ["LIBGL_ALWAYS_SOFTWARE"] = "1"
+    with tempfile.TemporaryDirectory(prefix=f"raylab-e2e-{name}-") as workdir:
+        env = Env(os.path.abspath(raylab), os.path.abspath(render), workdir)
+        try:
+            function(env)
+        except Failure as failure:
+            print(f"FAIL {name}: {failure}")
+            return 1
+    print(f"PASS {name}")
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("test", choices=sorted(TESTS))
     parser.add_argument("--raylab", required=True)
     parser.add_argument("--render", required=True)
-    parser.add_argument("--inside-xvfb", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     function, needs_window = TESTS[args.test]
-    if needs_window and not args.inside_xvfb:
-        xvfb = shutil.which("xvfb-run")
-        if xvfb is None:
-            print(f"SKIP {args.test}: xvfb-run is not installed")
-            return SKIP
-        # -a picks a free display; starting from a per-process number makes two runs at once
-        # (ctest -j, several build trees) unlikely to race for the same one. When they do race
-        # anyway (the display vanishes under the test), the test runs again on another display.
-        for attempt in range(3):
-            first = 100 + (os.getpid() + 97 * attempt) % 800
-            command = [xvfb, "-a", "-n", str(first), "-s", XVFB_SERVER_ARGS, sys.executable,
-                       os.path.abspath(__file__), args.test, "--raylab", args.raylab,
-                       "--render", args.render, "--inside-xvfb"]
-            result = subprocess.run(command, capture_output=True, text=True)
-            sys.stdout.write(result.stdout)
-            sys.stderr.write(result.stderr)
-            if result.returncode == 0 or "Failed to open display" not in result.stdout:
-                return result.returncode
-            print(f"{args.test}: the X display went away; running again on another one")
-        return result.returncode
-    os.environ["LIBGL_ALWAYS_SOFTWARE"] = "1"
-    with tempfile.TemporaryDirectory(prefix=f"raylab-e2e-{args.test}-") as workdir:
-        env = Env(os.path.abspath(args.raylab), os.path.abspath(args.render), workdir)
-        try:
-            function(env)
-        except Failure as failure:
-            print(f"FAIL {args.test}: {failure}")
-            return 1
-    print(f"PASS {args.test}")
-    return 0
+    if not needs_window:
+        return run_test(function, args.test, args.raylab, args.render)
+    if shutil.which("Xvfb") is None:
+        print(f"SKIP {args.test}: Xvfb is not installed")
+        return SKIP
+    try:
+        with Display() as display:
+            result = run_test(function, args.test, args.raylab, args.render)
+            if result != 0 and not display.alive():
+                print(f"{args.test}: the X server ended during the test")
+            return result
+    except DisplayError as error:
+        print(f"FAIL {args.test}: {error}")
+        return 1
 
 
 if __name__ == "__main__":
