@@ -29,7 +29,7 @@ struct PixelEstimate {
 
 PixelEstimate estimate(const Film& film, std::size_t pixel, int c) {
     const double n = film.samples();
-    const double sum = film.sums()[pixel][c];
+    const double sum = fromFixed(film.sumOf(pixel).channel[c]);
     const double variance = std::max(0.0, (film.squares()[pixel][c] - sum * sum / n) / (n - 1.0));
     return {sum / n, std::sqrt(variance / n)};
 }

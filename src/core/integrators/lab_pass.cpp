@@ -64,44 +64,13 @@ RAYLAB_AVX2 void samplePoints8(int x0, int y, uint32_t sampleIndex, uint32_t row
     _mm256_storeu_ps(py, _mm256_add_ps(_mm256_set1_ps(static_cast<float>(y)), dy));
 }
 
-// The 8 lanes of `radiance` as 24 floats r0 g0 b0 r1 ... b7 in out[0..2]. Within each 128-bit
-// half (4 pixels), each output quarter is a blend of the channels permuted so that every value
-// sits in its output position: r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3.
-RAYLAB_AVX2 inline void interleave8(const RadiancePacket& radiance, __m256 out[3]) {
-    const __m256 r = _mm256_permute_ps(_mm256_load_ps(radiance.value[0]), _MM_SHUFFLE(1, 2, 3, 0));
-    const __m256 g = _mm256_permute_ps(_mm256_load_ps(radiance.value[1]), _MM_SHUFFLE(2, 3, 0, 1));
-    const __m256 b = _mm256_permute_ps(_mm256_load_ps(radiance.value[2]), _MM_SHUFFLE(3, 0, 1, 2));
-    const __m256 first = _mm256_blend_ps(_mm256_blend_ps(r, g, 0x22), b, 0x44);  // r g b r
-    const __m256 second = _mm256_blend_ps(_mm256_blend_ps(g, r, 0x44), b, 0x22); // g b r g
-    const __m256 third = _mm256_blend_ps(_mm256_blend_ps(b, r, 0x22), g, 0x44);  // b r g b
-    out[0] = _mm256_permute2f128_ps(first, second, 0x20); // pixels 0, 1, 2 (r g)
-    out[1] = _mm256_permute2f128_ps(third, first, 0x30);  // pixels 2 (b), 3, 4, 5 (r)
-    out[2] = _mm256_permute2f128_ps(second, third, 0x31); // pixels 5 (g b), 6, 7
-}
-
-// storeOrAdd for a full packet: the same float additions, 8 pixels at a time.
-RAYLAB_AVX2 void storeOrAdd8(const RadiancePacket& radiance, bool first, glm::vec3* row) {
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
-    float* out = &row[0].x;
-    __m256 values[3];
-    interleave8(radiance, values);
-    for (int k = 0; k < 3; ++k) {
-        const __m256 sum =
-            first ? values[k] : _mm256_add_ps(_mm256_loadu_ps(out + 8 * k), values[k]);
-        _mm256_storeu_ps(out + 8 * k, sum);
-    }
-}
-
-// Writes lanes [0, count) of `radiance` to row[0, count): stored when `first`, else added.
-inline void storeOrAdd(const RadiancePacket& radiance, int count, bool first, glm::vec3* row) {
-    if (first) {
-        for (int i = 0; i < count; ++i) {
-            row[i] = glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
-        }
-        return;
-    }
+// Writes lanes [0, count) of `radiance` to the film's pixels row .. row + count - 1.
+inline void write(const RadiancePacket& radiance, int count, Film::Write how, std::size_t row,
+                  Film& film) {
     for (int i = 0; i < count; ++i) {
-        row[i] += glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]);
+        film.write(row + static_cast<std::size_t>(i),
+                   glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]),
+                   how);
     }
 }
 
@@ -119,8 +88,9 @@ inline void storeOrAddSquares(const RadiancePacket& radiance, int count, bool fi
 bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
              RayCounts* counts, const PassOptions& options) {
     const int width = settings.width;
-    const uint32_t sampleIndex = film.samples();
-    const std::span<glm::vec3> sums = film.sums();
+    const uint32_t sampleIndex = film.nextSample();
+    const Film::Write how = film.nextWrite();
+    const bool first = how == Film::Write::First;
     const std::span<glm::vec3> squares = film.squares();
     const PrimaryRays rays(settings.camera, width, settings.height);
     const uint32_t sampleSeed = hash32(sampleIndex);
@@ -160,15 +130,10 @@ bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                     shadeLabBlock(scene, bvh, settings, rays, rect, packets, rows, radiance,
                                   tileCounts);
                     for (int r = 0; r < rows; ++r) {
-                        const std::size_t first = static_cast<std::size_t>(y0 + r) * width + x0;
-                        if (simd && count == kPacketSize) {
-                            storeOrAdd8(radiance[r], sampleIndex == 0, &sums[first]);
-                        } else {
-                            storeOrAdd(radiance[r], count, sampleIndex == 0, &sums[first]);
-                        }
+                        const std::size_t row = film.indexOf(x0, y0 + r);
+                        write(radiance[r], count, how, row, film);
                         if (!squares.empty()) {
-                            storeOrAddSquares(radiance[r], count, sampleIndex == 0,
-                                              &squares[first]);
+                            storeOrAddSquares(radiance[r], count, first, &squares[row]);
                         }
                     }
                 }

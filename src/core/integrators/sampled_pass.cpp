@@ -39,9 +39,9 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                  const RenderSettings& settings, Film& film, RayCounts* counts,
                  const PassOptions& options) {
     const int width = settings.width;
-    const uint32_t sampleIndex = film.samples();
-    const bool first = sampleIndex == 0;
-    const std::span<glm::vec3> sums = film.sums();
+    const uint32_t sampleIndex = film.nextSample();
+    const Film::Write how = film.nextWrite();
+    const bool first = how == Film::Write::First;
     const std::span<glm::vec3> squares = film.squares();
     const std::span<glm::vec4> indirect = film.indirect();
     const PrimaryRays rays(settings.camera, width, settings.height);
@@ -50,7 +50,10 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
         settings, film, counts, options, [&](const TileRect& tile, RayCounts& tileCounts) {
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
+                    // Samples are drawn per pixel of the whole image; sums kept per pixel of the
+                    // film's window.
                     const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+                    const std::size_t kept = film.indexOf(x, y);
                     const PixelSampler sampler(settings.sampler, static_cast<uint32_t>(pixel),
                                                sampleIndex);
                     // Pixel positions: the path integrator's from its sampler, the lab's own.
@@ -77,11 +80,11 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                         value = shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts);
                     }
                     if (!indirect.empty()) {
-                        indirect[pixel] = first ? n : indirect[pixel] + n;
+                        indirect[kept] = first ? n : indirect[kept] + n;
                     }
-                    sums[pixel] = first ? value : sums[pixel] + value;
+                    film.write(kept, value, how);
                     if (!squares.empty()) {
-                        squares[pixel] = first ? value * value : squares[pixel] + value * value;
+                        squares[kept] = first ? value * value : squares[kept] + value * value;
                     }
                 }
             }

@@ -8,13 +8,10 @@ namespace raylab {
 bool forEachPassTile(const RenderSettings& settings, Film& film, RayCounts* counts,
                      const PassOptions& options,
                      const std::function<void(const TileRect& tile, RayCounts& counts)>& body) {
-    const int width = settings.width;
-    assert(film.width() == width && film.height() == settings.height);
-    assert(options.displayRgba.empty() ||
-           options.displayRgba.size() >= 4 * static_cast<std::size_t>(width) * settings.height);
-    // Film::scale() once this sample is counted: sum * (1 / n).
-    const float displayScale = 1.0f / static_cast<float>(film.samples() + 1);
-    const std::span<const glm::vec3> sums = film.sums();
+    const FilmWindow window = film.window();
+    assert(window.x0 >= 0 && window.y0 >= 0 && window.x1 <= settings.width &&
+           window.y1 <= settings.height);
+    assert(options.displayRgba.empty() || options.displayRgba.size() >= 4 * film.pixelCount());
     std::atomic<uint64_t> primary{0};
     std::atomic<uint64_t> shadow{0};
     std::atomic<uint64_t> bounce{0};
@@ -27,16 +24,20 @@ bool forEachPassTile(const RenderSettings& settings, Film& film, RayCounts* coun
             options.progress(static_cast<double>(done) / static_cast<double>(total));
         };
     }
-    const bool complete = forEachTile(width, settings.height, loop, [&](const TileRect& tile) {
+    const bool complete = forEachTile(window.width(), window.height(), loop, [&](TileRect tile) {
+        tile.x0 += window.x0;
+        tile.x1 += window.x0;
+        tile.y0 += window.y0;
+        tile.y1 += window.y0;
         RayCounts tileCounts;
         body(tile, tileCounts);
         if (!options.displayRgba.empty()) {
             for (int y = tile.y0; y < tile.y1; ++y) {
-                const std::size_t first = static_cast<std::size_t>(y) * width + tile.x0;
+                const std::size_t first = film.indexOf(tile.x0, y);
                 const std::size_t count = static_cast<std::size_t>(tile.x1 - tile.x0);
-                toRgba8(sums.subspan(first, count), displayScale, settings.display,
-                        settings.exposure, options.displayRgba.subspan(4 * first, 4 * count),
-                        options.displayOrder);
+                film.toDisplayCounting(first, count,
+                                       options.displayRgba.subspan(4 * first, 4 * count),
+                                       settings.display, settings.exposure, options.displayOrder);
             }
         }
         primary.fetch_add(tileCounts.primary, std::memory_order_relaxed);

@@ -14,7 +14,7 @@ FilmLayers filmLayersFor(const RenderSettings& settings) {
 
 bool renderPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
                 RayCounts* counts, const PassOptions& options) {
-    assert(film.width() == settings.width && film.height() == settings.height);
+    assert(film.window().x1 <= settings.width && film.window().y1 <= settings.height);
     bool complete = false;
     const bool emitting = hasEmittingMaterial(scene);
     if (settings.integrator == Integrator::Lab && settings.light.radius == 0.0f && !emitting &&

@@ -17,11 +17,12 @@ namespace raylab {
 // integrator (its noise and its mean N); none for the lab's, which stays as fast as it was.
 FilmLayers filmLayersFor(const RenderSettings& settings);
 
-// Adds sample film.samples() of every pixel to the film (settings.width x settings.height; it
-// must be that size) and counts it. The lab integrator's beauty with the lab's point light and no
-// emitter takes the packet and 8 x 8 block paths (integrators/lab_pass.h); every other case traces
-// each pixel's sample on its own (integrators/sampled_pass.h). When cancelled returns false and
-// restarts the film, whose sums are then partly updated and worthless.
+// Adds sample film.nextSample() of every pixel of the film's window (the whole image of
+// settings.width x settings.height, or a crop of it) to the film and counts it. The lab
+// integrator's beauty with the lab's point light and no emitter takes the packet and 8 x 8 block
+// paths (integrators/lab_pass.h); every other case traces each pixel's sample on its own
+// (integrators/sampled_pass.h). When cancelled returns false and restarts the film, whose sums are
+// then partly updated and worthless.
 bool renderPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
                 RayCounts* counts = nullptr, const PassOptions& options = {});
 
