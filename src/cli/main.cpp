@@ -13,6 +13,7 @@
 #include "io/image_io.h"
 #include "io/inspection_json.h"
 #include "io/mesh_loader.h"
+#include "io/partial_file.h"
 #include "io/settings_json.h"
 #include "io/text_util.h"
 
@@ -105,6 +106,15 @@ int run(int argc, char** argv) {
     if (!cl.saveSettings.empty() && !raylab::checkWritable(cl.saveSettings, error)) {
         return fail(1, error);
     }
+    if (!cl.partial.empty() && !raylab::checkWritable(cl.partial, error)) {
+        return fail(1, error);
+    }
+    // A partial names its scene by the hash of its file's contents, so that raylab-merge can
+    // tell that the parts rendered the same mesh.
+    std::string sceneHash;
+    if (!cl.partial.empty() && !raylab::sceneContentHash(cl.scene, sceneHash, error)) {
+        return fail(1, error);
+    }
 
     raylab::Scene scene;
     raylab::MeshLoadReport report;
@@ -118,6 +128,9 @@ int run(int argc, char** argv) {
         return fail(1, why);
     }
     raylab::RenderSettings& settings = cl.settings;
+    // The pixels rendered: the whole image, or --crop's window of it.
+    const raylab::FilmWindow window =
+        cl.crop.value_or(raylab::FilmWindow{0, 0, settings.width, settings.height});
 
     // --reference: the converged picture the samples' error is measured against, read first so
     // that a bad file fails before the render.
@@ -126,11 +139,11 @@ int run(int argc, char** argv) {
         if (!readReference(cl.reference, reference, error)) {
             return fail(1, error);
         }
-        if (reference.width != settings.width || reference.height != settings.height) {
+        if (reference.width != window.width() || reference.height != window.height()) {
             return fail(1,
                         "reference '" + cl.reference + "' is " + std::to_string(reference.width) +
                             "x" + std::to_string(reference.height) + ", the render is " +
-                            std::to_string(settings.width) + "x" + std::to_string(settings.height));
+                            std::to_string(window.width()) + "x" + std::to_string(window.height()));
         }
     }
 
@@ -146,7 +159,7 @@ int run(int argc, char** argv) {
             raylab::inspectPixel(scene, bvh, emitters, settings, cl.inspectX, cl.inspectY);
         std::printf("%s\n", raylab::inspectionToJson(inspection).c_str());
         std::fflush(stdout);
-        if (cl.output.empty()) {
+        if (cl.output.empty() && cl.partial.empty()) {
             return 0;
         }
     }
@@ -155,13 +168,15 @@ int run(int argc, char** argv) {
     raylab::RayCounts counts;
     raylab::FilmLayers layers = raylab::filmLayersFor(settings);
     layers.moments = layers.moments || cl.targetError > 0.0f; // the noise estimate needs them
-    raylab::Film film(settings.width, settings.height, layers);
+    layers.moments = layers.moments || !cl.partial.empty();   // a merge reports the noise
+    raylab::Film film(window, layers);
+    film.startAt(cl.firstSample);
     double referenceSeconds = 0.0; // time spent measuring errors, left out of the render's time
     {
         ProgressLine progress; // erased at the end of this block
         raylab::PassOptions passOptions;
         passOptions.emitters = &emitters;
-        const int samples = settings.samplesPerPixel;
+        const int samples = settings.samplesPerPixel - static_cast<int>(cl.firstSample);
         for (int sample = 0; sample < samples; ++sample) {
             passOptions.progress = [&progress, sample, samples](double fraction) {
                 progress.update((sample + fraction) / samples);
@@ -194,13 +209,22 @@ int run(int argc, char** argv) {
     }
     // What the picture holds: --target-error may have stopped early, and the saved settings must
     // reproduce these bytes.
-    settings.samplesPerPixel = static_cast<int>(film.samples());
-    const raylab::Framebuffer image = film.mean();
+    settings.samplesPerPixel = static_cast<int>(film.nextSample());
     const double seconds =
         std::chrono::duration<double>(Clock::now() - start).count() - referenceSeconds;
 
     const std::string json = raylab::settingsToJson(settings, cl.scene);
-    if (!raylab::writeImage(cl.output, image, settings.display, settings.exposure, error,
+    if (!cl.partial.empty()) {
+        raylab::PartialRender partial = raylab::partialOf(film, settings.width, settings.height);
+        partial.settingsJson = json;
+        partial.scene = cl.scene;
+        partial.sceneHash = sceneHash;
+        if (!raylab::writePartial(cl.partial, partial, error)) {
+            return fail(1, error);
+        }
+    }
+    if (!cl.output.empty() &&
+        !raylab::writeImage(cl.output, film.mean(), settings.display, settings.exposure, error,
                             {{"Software", "raylab-render"}, {"raylab settings", json}})) {
         return fail(1, error);
     }
@@ -219,14 +243,24 @@ int run(int argc, char** argv) {
     if (const raylab::NoiseEstimate noise = film.noise(); noise.known) {
         noiseText = ", noise " + std::to_string(100.0 * noise.relativeError).substr(0, 5) + "%";
     }
+    const std::string samplesText = film.firstSample() == 0
+                                        ? std::to_string(film.samples()) + " spp"
+                                        : "samples " + std::to_string(film.firstSample()) + ":" +
+                                              std::to_string(film.nextSample());
+    const std::string sizeText =
+        std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+        (cl.crop ? " crop " + std::to_string(window.x0) + "," + std::to_string(window.y0) + "," +
+                       std::to_string(window.x1) + "," + std::to_string(window.y1)
+                 : std::string());
+    const std::string outputs =
+        cl.output + (!cl.output.empty() && !cl.partial.empty() ? ", " : "") + cl.partial;
     std::fprintf(stderr,
-                 "%s: %dx%d, %d spp, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s, "
+                 "%s: %s, %s, %zu triangles, BVH %.2f s, render %.2f s, %.1f Mrays/s, "
                  "%.2f Msamples/s%s%s -> %s\n",
-                 kProgram, settings.width, settings.height, settings.samplesPerPixel,
-                 scene.triangles.size(), buildSeconds, seconds,
-                 seconds > 0.0 ? rays / seconds * 1e-6 : 0.0,
+                 kProgram, sizeText.c_str(), samplesText.c_str(), scene.triangles.size(),
+                 buildSeconds, seconds, seconds > 0.0 ? rays / seconds * 1e-6 : 0.0,
                  seconds > 0.0 ? pixelSamples / seconds * 1e-6 : 0.0, noiseText.c_str(),
-                 presetText.c_str(), cl.output.c_str());
+                 presetText.c_str(), outputs.c_str());
     return 0;
 }
 

@@ -281,7 +281,14 @@ const std::vector<Option>& options() {
              return {};
          }},
         {"--spp", "N", kAll, "samples per pixel, 1 = the lab's centred ray (default 1)",
-         settingsIntIn(1, kMaxSamplesPerPixel, &RenderSettings::samplesPerPixel)},
+         [](const std::string& v, ParseState& s) -> std::string {
+             std::string why =
+                 settingsIntIn(1, kMaxSamplesPerPixel, &RenderSettings::samplesPerPixel)(v, s);
+             if (why.empty()) {
+                 s.out.firstSample = 0; // --spp N is --samples 0:N
+             }
+             return why;
+         }},
         {"--threads", "N", kAll, "render threads, 0 = all cores (default 0)",
          settingsIntIn(0, kMaxThreads, &RenderSettings::threads)},
         {"--display", "lab|srgb", kAll, "display transform for 8-bit output (default lab)",
@@ -334,6 +341,53 @@ const std::vector<Option>& options() {
                  return expected("a relative error in (0, 1), e.g. 0.01", v);
              }
              s.out.targetError = e;
+             return {};
+         }},
+        {"--samples", "A:B", kRender,
+         "render samples A (inclusive) to B (exclusive) of every pixel, the samples a full "
+         "render draws (--spp N is 0:N)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             const std::size_t colon = v.find(':');
+             int a = -1;
+             int b = -1;
+             if (colon == std::string::npos || !parseInt(v.substr(0, colon), a) ||
+                 !parseInt(v.substr(colon + 1), b) || a < 0 || b <= a || b > kMaxSamplesPerPixel) {
+                 return expected(("a range A:B of sample indices, 0 <= A < B <= " +
+                                  std::to_string(kMaxSamplesPerPixel))
+                                     .c_str(),
+                                 v);
+             }
+             s.out.firstSample = static_cast<uint32_t>(a);
+             s.out.settings.samplesPerPixel = b;
+             return {};
+         }},
+        {"--partial", "FILE.exr", kRender,
+         "write the unnormalised sums and their sample range for raylab-merge (-o optional)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (lowerCase(v).size() < 5 ||
+                 lowerCase(v).substr(lowerCase(v).size() - 4) != ".exr") {
+                 return expected("a file name ending in .exr", v);
+             }
+             s.out.partial = v;
+             return {};
+         }},
+        {"--crop", "X0,Y0,X1,Y1", kRender,
+         "render only the pixels X0 <= x < X1, Y0 <= y < Y1 of the image",
+         [](const std::string& v, ParseState& s) -> std::string {
+             int values[4] = {-1, -1, -1, -1};
+             std::size_t start = 0;
+             for (int k = 0; k < 4; ++k) {
+                 const std::size_t comma = k < 3 ? v.find(',', start) : v.size();
+                 if (comma == std::string::npos ||
+                     !parseInt(v.substr(start, comma - start), values[k]) || values[k] < 0) {
+                     return expected("four integers x0,y0,x1,y1 >= 0", v);
+                 }
+                 start = comma + 1;
+             }
+             if (values[2] <= values[0] || values[3] <= values[1]) {
+                 return expected("a rectangle with x0 < x1 and y0 < y1", v);
+             }
+             s.out.crop = FilmWindow{values[0], values[1], values[2], values[3]};
              return {};
          }},
         {"--inspect", "X,Y", kRender,
@@ -547,8 +601,23 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         }
         result.settings.camera.verticalFovDegrees = fov;
     }
-    if (program == Program::Render && result.output.empty() && !result.inspect) {
-        error = "missing output file (-o FILE; see --help)";
+    if (program == Program::Render && result.output.empty() && !result.inspect &&
+        result.partial.empty()) {
+        error = "missing output file (-o FILE or --partial FILE.exr; see --help)";
+        return 2;
+    }
+    if (result.firstSample >= static_cast<uint32_t>(result.settings.samplesPerPixel)) {
+        error = "--samples: the range starts at " + std::to_string(result.firstSample) +
+                " but --spp ends it at " + std::to_string(result.settings.samplesPerPixel);
+        return 2;
+    }
+    if (result.crop &&
+        (result.crop->x1 > result.settings.width || result.crop->y1 > result.settings.height)) {
+        error = "--crop: " + std::to_string(result.crop->x0) + "," +
+                std::to_string(result.crop->y0) + "," + std::to_string(result.crop->x1) + "," +
+                std::to_string(result.crop->y1) + " is not inside the " +
+                std::to_string(result.settings.width) + "x" +
+                std::to_string(result.settings.height) + " image";
         return 2;
     }
     if (result.inspect &&

@@ -5,6 +5,7 @@
 
 #include "core/cornell_box.h"
 #include "core/lab_presets.h"
+#include "core/render/film.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
 #include "core/scene_framing.h"
@@ -36,6 +37,11 @@ struct CommandLine {
     bool inspect = false;              // render: --inspect X,Y (then -o is optional)
     int inspectX = 0;
     int inspectY = 0;
+    // render: --samples A:B renders samples [firstSample, settings.samplesPerPixel) of each pixel
+    // (--spp N is 0:N)
+    uint32_t firstSample = 0;
+    std::string partial;            // render: --partial FILE.exr, the sums instead of a picture
+    std::optional<FilmWindow> crop; // render: --crop X0,Y0,X1,Y1, only these pixels
     // viewer
     int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
     std::string screenshot;          // --screenshot FILE: save the last shown frame

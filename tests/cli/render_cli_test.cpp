@@ -7,6 +7,7 @@
 #include "core/render/image_error.h"
 #include "core/render/renderer.h"
 #include "io/image_io.h"
+#include "run_program.h"
 #include "temp_dir_test.h"
 #include "test_assets.h"
 
@@ -32,62 +33,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-    int errLines() const {
-        int n = 0;
-        for (const char c : err) {
-            n += c == '\n' ? 1 : 0;
-        }
-        return n;
-    }
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 class RenderCli : public test::TempDirTest {
 protected:
     // Runs raylab-render with args (in the test folder), stdout and stderr captured.
     Outcome run(const std::vector<std::string>& args) const {
-        const std::string outFile =
-            (dir_.parent_path() / (dir_.filename().string() + ".out")).string();
-        const std::string errFile =
-            (dir_.parent_path() / (dir_.filename().string() + ".err")).string();
-        std::vector<std::string> all = {RAYLAB_RENDER_EXE};
-        all.insert(all.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (std::string& a : all) {
-            argv.push_back(a.data());
-        }
-        argv.push_back(nullptr);
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, outFile.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errFile.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        Outcome result;
-        pid_t pid = 0;
-        const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        EXPECT_EQ(spawned, 0) << std::strerror(spawned);
-        if (spawned != 0) {
-            return result;
-        }
-        int status = 0;
-        waitpid(pid, &status, 0);
-        result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        result.out = slurp(outFile);
-        result.err = slurp(errFile);
-        fs::remove(outFile);
-        fs::remove(errFile);
-        return result;
+        return runProgram(RAYLAB_RENDER_EXE, args, dir_);
     }
 
     // A bad run: the exit code, exactly one stderr line starting with the program's name, nothing
