@@ -109,6 +109,9 @@ int run(int argc, char** argv) {
     if (!cl.partial.empty() && !raylab::checkWritable(cl.partial, error)) {
         return fail(1, error);
     }
+    if (!cl.saveFrames.empty() && !raylab::checkWritable(cl.saveFrames, error)) {
+        return fail(1, error);
+    }
     // A partial names its scene by the hash of its file's contents, so that raylab-merge can
     // tell that the parts rendered the same mesh.
     std::string sceneHash;
@@ -128,6 +131,18 @@ int run(int argc, char** argv) {
         return fail(1, why);
     }
     raylab::RenderSettings& settings = cl.settings;
+    if (!cl.saveFrames.empty()) {
+        raylab::SettingsFileExtras extras;
+        extras.frames = cl.frameCameras;
+        if (!raylab::saveSettingsFile(cl.saveFrames, settings, cl.scene, extras, error)) {
+            return fail(1, error);
+        }
+        if (cl.output.empty() && cl.partial.empty() && !cl.inspect) {
+            std::fprintf(stderr, "%s: %zu frames -> %s\n", kProgram, cl.frameCameras.size(),
+                         cl.saveFrames.c_str());
+            return 0;
+        }
+    }
     // The pixels rendered: the whole image, or --crop's window of it.
     const raylab::FilmWindow window =
         cl.crop.value_or(raylab::FilmWindow{0, 0, settings.width, settings.height});

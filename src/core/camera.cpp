@@ -106,6 +106,25 @@ void orbitCamera(Camera& camera, const glm::vec3& pivot, float yawDegrees, float
     camera.pitchDegrees = pitch;
 }
 
+std::vector<Camera> turntableCameras(const Camera& start, const glm::vec3& centre, int frames) {
+    std::vector<Camera> cameras{start}; // frame 0 is the camera itself, bit for bit
+    for (int k = 1; k < frames; ++k) {
+        const double degrees = 360.0 * k / frames;
+        const double radians = glm::radians(degrees);
+        const double c = std::cos(radians);
+        const double s = std::sin(radians);
+        // Turning by theta about y maps (x, z) to (x cos + z sin, z cos - x sin): what adding
+        // theta to the yaw does to the forward axis (sin yaw, ., cos yaw).
+        const glm::dvec3 offset = glm::dvec3(start.position) - glm::dvec3(centre);
+        Camera camera = start;
+        camera.position = centre + glm::vec3(glm::dvec3(offset.x * c + offset.z * s, offset.y,
+                                                        offset.z * c - offset.x * s));
+        camera.yawDegrees = static_cast<float>(std::remainder(start.yawDegrees + degrees, 360.0));
+        cameras.push_back(camera);
+    }
+    return cameras;
+}
+
 void panCamera(Camera& camera, float right, float up) {
     const glm::mat3 axes = worldFromCamera(camera);
     camera.position += right * axes[0] + up * axes[1];

@@ -8,6 +8,7 @@
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace raylab {
 
@@ -37,6 +38,11 @@ void lookAt(Camera& camera, const glm::vec3& target);
 // up, the distance is kept, and the camera looks at the pivot. The pitch stays within +-85
 // degrees. A camera at the pivot is left as it is.
 void orbitCamera(Camera& camera, const glm::vec3& pivot, float yawDegrees, float pitchDegrees);
+
+// A turntable of `frames` cameras (frames >= 1): frame k is `start` turned rigidly by 360 k /
+// frames degrees about the vertical line through `centre` (position and yaw together; pitch and
+// field of view kept), so the scene seems to spin in front of a still camera.
+std::vector<Camera> turntableCameras(const Camera& start, const glm::vec3& centre, int frames);
 
 // Moves the camera along its own right and up axes (world units): a pan.
 void panCamera(Camera& camera, float right, float up);

@@ -390,6 +390,35 @@ const std::vector<Option>& options() {
              s.out.crop = FilmWindow{values[0], values[1], values[2], values[3]};
              return {};
          }},
+        {"--turntable", "N", kRender,
+         "the frames of a turntable: N cameras turning about the scene's centre",
+         intIn(1, static_cast<int>(kMaxFrames), &CommandLine::turntable)},
+        {"--frames-from", "FILE.json", kRender,
+         "the frames' cameras from a settings file's \"frames\" (--save-frames writes one)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             RenderSettings ignored;
+             SettingsJsonExtras extras;
+             std::string error;
+             if (!loadSettingsFile(v, ignored, extras, error)) {
+                 return error;
+             }
+             if (extras.frames.empty()) {
+                 return v + " lists no \"frames\"";
+             }
+             s.out.frameCameras = std::move(extras.frames);
+             return {};
+         }},
+        {"--frame", "K", kRender, "render frame K (from 0) of --turntable or --frames-from",
+         intIn(0, static_cast<int>(kMaxFrames) - 1, &CommandLine::frame)},
+        {"--save-frames", "FILE.json", kRender,
+         "write the settings with the frames' cameras, for --frames-from (-o optional)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (v.empty()) {
+                 return "expected a file name";
+             }
+             s.out.saveFrames = v;
+             return {};
+         }},
         {"--inspect", "X,Y", kRender,
          "print the lab's equation for pixel X,Y with its numbers, as JSON (-o optional)",
          [](const std::string& v, ParseState& s) -> std::string {
@@ -567,6 +596,7 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         }
         markGivenFromKeys(extras, result.given);
         result.bookmarks = extras.bookmarks;
+        result.frameCameras = extras.frames;
         if (!sceneGiven && !extras.scene.empty()) {
             result.scene = extras.scene;
         }
@@ -602,8 +632,12 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         result.settings.camera.verticalFovDegrees = fov;
     }
     if (program == Program::Render && result.output.empty() && !result.inspect &&
-        result.partial.empty()) {
+        result.partial.empty() && result.saveFrames.empty()) {
         error = "missing output file (-o FILE or --partial FILE.exr; see --help)";
+        return 2;
+    }
+    if (!result.saveFrames.empty() && result.turntable == 0 && result.frameCameras.empty()) {
+        error = "--save-frames: no frames to save (give --turntable N or --frames-from FILE)";
         return 2;
     }
     if (result.firstSample >= static_cast<uint32_t>(result.settings.samplesPerPixel)) {
@@ -676,6 +710,20 @@ std::string finishSettings(const Scene& scene, CommandLine& commandLine) {
     placeForScene(scene, isLabBoxName(commandLine.scene), commandLine.given, settings);
     if (commandLine.lookAt) {
         lookAt(settings.camera, *commandLine.lookAt);
+    }
+    if (commandLine.turntable > 0) {
+        commandLine.frameCameras =
+            turntableCameras(settings.camera, scene.bounds().center(), commandLine.turntable);
+    }
+    if (commandLine.frame >= 0) {
+        if (static_cast<std::size_t>(commandLine.frame) >= commandLine.frameCameras.size()) {
+            return "--frame " + std::to_string(commandLine.frame) + ": " +
+                   (commandLine.frameCameras.empty()
+                        ? std::string("no frames (give --turntable N or --frames-from FILE)")
+                        : "there are " + std::to_string(commandLine.frameCameras.size()) +
+                              " frames");
+        }
+        settings.camera = commandLine.frameCameras[static_cast<std::size_t>(commandLine.frame)];
     }
     return validate(settings);
 }

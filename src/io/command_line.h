@@ -13,6 +13,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -42,6 +43,13 @@ struct CommandLine {
     uint32_t firstSample = 0;
     std::string partial;            // render: --partial FILE.exr, the sums instead of a picture
     std::optional<FilmWindow> crop; // render: --crop X0,Y0,X1,Y1, only these pixels
+    // render: the frames of an animation: --turntable N makes them (once the scene is known),
+    // --frames-from FILE.json (or --settings) lists them; --frame K renders frame K's camera,
+    // --save-frames FILE.json writes the list with the settings
+    int turntable = 0;
+    std::vector<Camera> frameCameras;
+    int frame = -1;
+    std::string saveFrames;
     // viewer
     int frames = 0;                  // --frames N: quit after N shown frames (0 = run until closed)
     std::string screenshot;          // --screenshot FILE: save the last shown frame
@@ -64,9 +72,10 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
 std::string usage(Program program);
 
 // Once the scene is loaded: core's placeForScene (the lab's camera and light for the lab's box,
-// frameScene's for a mesh) except for what the user gave; then --look-at turns the camera. Returns
-// an empty string, or one line when the result fails validate() (e.g. a look-at point straight
-// above the camera).
+// frameScene's for a mesh) except for what the user gave; then --look-at turns the camera; then
+// --turntable makes the frames about the scene's centre from that camera, and --frame K takes
+// frame K's camera. Returns an empty string, or one line when the result fails validate() (e.g.
+// a look-at point straight above the camera) or names a frame that does not exist.
 std::string finishSettings(const Scene& scene, CommandLine& commandLine);
 
 } // namespace raylab

@@ -126,6 +126,8 @@ public:
                               {"sampler", samplerKind(&work_.sampler)}});
             } else if (key == "emission") {
                 ok = section(key, value, {{"scale", number(&work_.emissionScale)}});
+            } else if (key == "frames") {
+                ok = readFrames(value);
             } else if (key == "bookmarks") {
                 if (!readBookmarks(value)) {
                     return false;
@@ -152,47 +154,72 @@ public:
 
     const RenderSettings& result() const { return work_; }
 
-    // "bookmarks": [9 x (null | {"position": [x, y, z], "yaw": deg, "pitch": deg, "fov": deg})];
-    // each camera must be valid as a camera of the settings is.
+    // One camera, {"position": [x, y, z], "yaw": deg, "pitch": deg, "fov": deg}, valid as a
+    // camera of the settings is; keys left out keep the defaults.
+    bool readCamera(const std::string& name, const Json& value, Camera& camera) {
+        if (!value.is_object()) {
+            return fail(name, "must be a camera, got " + shown(value));
+        }
+        RenderSettings probe;
+        for (const auto& [key, child] : value.items()) {
+            std::string why;
+            if (key == "position") {
+                why = vec3(&probe.camera.position)(child);
+            } else if (key == "yaw") {
+                why = asFloat(child, probe.camera.yawDegrees);
+            } else if (key == "pitch") {
+                why = asFloat(child, probe.camera.pitchDegrees);
+            } else if (key == "fov") {
+                why = asFloat(child, probe.camera.verticalFovDegrees);
+            } else {
+                why = "unknown key";
+            }
+            if (!why.empty()) {
+                return fail(name + "." + key, why);
+            }
+        }
+        if (std::string why = validate(probe); !why.empty()) {
+            return fail(name, why);
+        }
+        camera = probe.camera;
+        return true;
+    }
+
+    // "bookmarks": [9 x (null | camera)].
     bool readBookmarks(const Json& value) {
         if (!value.is_array() || value.size() != 9) {
             return fail("bookmarks", "must be an array of 9 cameras or nulls, got " + shown(value));
         }
         CameraBookmarks bookmarks;
         for (std::size_t i = 0; i < 9; ++i) {
-            const Json& slot = value[i];
-            if (slot.is_null()) {
+            if (value[i].is_null()) {
                 continue;
             }
-            const std::string name = "bookmarks[" + std::to_string(i) + "]";
-            if (!slot.is_object()) {
-                return fail(name, "must be a camera or null, got " + shown(slot));
+            Camera camera;
+            if (!readCamera("bookmarks[" + std::to_string(i) + "]", value[i], camera)) {
+                return false;
             }
-            RenderSettings probe;
-            for (const auto& [key, child] : slot.items()) {
-                std::string why;
-                if (key == "position") {
-                    why = vec3(&probe.camera.position)(child);
-                } else if (key == "yaw") {
-                    why = asFloat(child, probe.camera.yawDegrees);
-                } else if (key == "pitch") {
-                    why = asFloat(child, probe.camera.pitchDegrees);
-                } else if (key == "fov") {
-                    why = asFloat(child, probe.camera.verticalFovDegrees);
-                } else {
-                    why = "unknown key";
-                }
-                if (!why.empty()) {
-                    return fail(name + "." + key, why);
-                }
-            }
-            if (std::string why = validate(probe); !why.empty()) {
-                return fail(name, why);
-            }
-            bookmarks.slots[i] = probe.camera;
+            bookmarks.slots[i] = camera;
         }
         extras_.bookmarks = bookmarks;
         extras_.keys.insert("bookmarks");
+        return true;
+    }
+
+    // "frames": [camera, ...], 1 to kMaxFrames of them.
+    bool readFrames(const Json& value) {
+        if (!value.is_array() || value.empty() || value.size() > kMaxFrames) {
+            return fail("frames", "must be an array of 1 to " + std::to_string(kMaxFrames) +
+                                      " cameras, got " + shown(value));
+        }
+        std::vector<Camera> frames(value.size());
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            if (!readCamera("frames[" + std::to_string(i) + "]", value[i], frames[i])) {
+                return false;
+            }
+        }
+        extras_.frames = std::move(frames);
+        extras_.keys.insert("frames");
         return true;
     }
 
@@ -429,19 +456,25 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
             j["split"]["other"] = split.other;
         }
     }
+    const auto cameraJson = [](const Camera& c) {
+        return OrderedJson{{"position", vec3Json(c.position)},
+                           {"yaw", shortFloat(c.yawDegrees)},
+                           {"pitch", shortFloat(c.pitchDegrees)},
+                           {"fov", shortFloat(c.verticalFovDegrees)}};
+    };
     if (extras.bookmarks.any()) {
         OrderedJson slots = OrderedJson::array();
         for (const std::optional<Camera>& c : extras.bookmarks.slots) {
-            if (c) {
-                slots.push_back({{"position", vec3Json(c->position)},
-                                 {"yaw", shortFloat(c->yawDegrees)},
-                                 {"pitch", shortFloat(c->pitchDegrees)},
-                                 {"fov", shortFloat(c->verticalFovDegrees)}});
-            } else {
-                slots.push_back(nullptr);
-            }
+            slots.push_back(c ? cameraJson(*c) : OrderedJson(nullptr));
         }
         j["bookmarks"] = std::move(slots);
+    }
+    if (!extras.frames.empty()) {
+        OrderedJson frames = OrderedJson::array();
+        for (const Camera& c : extras.frames) {
+            frames.push_back(cameraJson(c));
+        }
+        j["frames"] = std::move(frames);
     }
     return j.dump(2) + "\n";
 }

@@ -26,6 +26,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -51,11 +52,17 @@ struct CameraBookmarks {
     bool operator==(const CameraBookmarks&) const = default;
 };
 
-// What a settings file holds besides the settings: a split record, bookmarks.
+// What a settings file holds besides the settings: a split record, bookmarks, frames.
 struct SettingsFileExtras {
     std::optional<SplitRecord> split;
     CameraBookmarks bookmarks; // written only when some slot is set
+    // "frames": the cameras of an animation (e.g. raylab-render --turntable), one per frame,
+    // each {"position", "yaw", "pitch", "fov"}; written only when not empty
+    std::vector<Camera> frames;
 };
+
+// The most frames a settings file may list.
+inline constexpr std::size_t kMaxFrames = 100000;
 
 // What a JSON text held besides the values.
 struct SettingsJsonExtras {
@@ -63,6 +70,7 @@ struct SettingsJsonExtras {
     std::string scene;                // its "scene", or empty
     std::optional<SplitRecord> split; // its "split", if any
     CameraBookmarks bookmarks;        // its "bookmarks", if any
+    std::vector<Camera> frames;       // its "frames", if any
 };
 
 // Reads JSON text over settings. Returns false with a one-line error naming the key, leaving

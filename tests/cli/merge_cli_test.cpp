@@ -5,6 +5,7 @@
 
 #include "io/image_io.h"
 #include "io/partial_file.h"
+#include "io/settings_json.h"
 #include "run_program.h"
 #include "temp_dir_test.h"
 #include "test_assets.h"
@@ -174,6 +175,50 @@ TEST_F(MergeCli, BadFlagsAreUsageErrors) {
     EXPECT_EQ(merge({"-o", path("x.png")}).exitCode, 2);
     EXPECT_EQ(merge({path("a.exr"), "-o", path("x.txt")}).exitCode, 2);
     EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
+} // namespace
+} // namespace raylab
+
+namespace raylab {
+namespace {
+
+TEST_F(MergeCli, TurntableFramesRenderOneCameraEachAndTravelThroughAFile) {
+    const Outcome saved = render({"--turntable", "6", "--save-frames", path("turntable.json")});
+    ASSERT_EQ(saved.exitCode, 0) << saved.err;
+    RenderSettings ignored;
+    SettingsJsonExtras extras;
+    std::string error;
+    ASSERT_TRUE(loadSettingsFile(path("turntable.json"), ignored, extras, error)) << error;
+    ASSERT_EQ(extras.frames.size(), 6u);
+    // Frame K from the file is frame K of the turntable made on the spot, and differs from frame
+    // K + 1.
+    renderOk(with(
+        kSize, {"--frames-from", path("turntable.json"), "--frame", "2", "-o", path("file.pfm")}));
+    renderOk(with(kSize, {"--turntable", "6", "--frame", "2", "-o", path("direct.pfm")}));
+    renderOk(with(kSize, {"--turntable", "6", "--frame", "3", "-o", path("next.pfm")}));
+    EXPECT_EQ(slurp(path("file.pfm")), slurp(path("direct.pfm")));
+    EXPECT_NE(slurp(path("file.pfm")), slurp(path("next.pfm")));
+    // The settings file of the render holds frame 2's camera.
+    renderOk(with(kSize, {"--turntable", "6", "--frame", "2", "-o", path("f.png"),
+                          "--save-settings", path("f.json")}));
+    RenderSettings frameSettings;
+    ASSERT_TRUE(loadSettingsFile(path("f.json"), frameSettings, error)) << error;
+    EXPECT_EQ(frameSettings.camera, extras.frames[2]);
+
+    for (const auto& [args, message] :
+         std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--frame", "1", "-o", path("x.png")}, "no frames"},
+             {{"--turntable", "3", "--frame", "3", "-o", path("x.png")}, "there are 3 frames"},
+             {{"--frames-from", path("none.json"), "--frame", "0", "-o", path("x.png")},
+              "none.json"},
+             {{"--turntable", "0", "-o", path("x.png")}, "--turntable"},
+             {{"--save-frames", path("y.json")}, "no frames to save"}}) {
+        const Outcome r = render(args);
+        EXPECT_NE(r.exitCode, 0) << r.err;
+        EXPECT_EQ(r.errLines(), 1) << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    }
 }
 
 } // namespace

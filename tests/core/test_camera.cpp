@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
 namespace raylab {
@@ -119,6 +121,51 @@ TEST(Camera, PanMovesAlongTheCamerasRightAndUp) {
     EXPECT_NEAR(glm::dot(moved, forwardOf(c)), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::length(moved), std::sqrt(1.25f), 1e-5f);
     EXPECT_EQ(c.yawDegrees, 40.0f);
+}
+
+} // namespace
+} // namespace raylab
+
+namespace raylab {
+namespace {
+
+TEST(Camera, ATurntableTurnsTheCameraRigidlyAboutTheCentresVerticalLine) {
+    Camera start;
+    start.position = glm::vec3(0.3f, 0.4f, -2.5f);
+    start.yawDegrees = 10.0f;
+    start.pitchDegrees = -8.0f;
+    const glm::vec3 centre(0.1f, -0.2f, 0.2f);
+    const std::vector<Camera> frames = turntableCameras(start, centre, 12);
+    ASSERT_EQ(frames.size(), 12u);
+    EXPECT_EQ(frames[0].position, start.position);
+    EXPECT_FLOAT_EQ(frames[0].yawDegrees, start.yawDegrees);
+    // Any point, seen from the camera, stays where it was on every frame: a point fixed to the
+    // turntable's axis (the centre, and one above it) keeps its camera-space coordinates.
+    const auto inCamera = [](const Camera& c, const glm::vec3& p) {
+        return glm::transpose(worldFromCamera(c)) * (p - c.position);
+    };
+    for (const glm::vec3& p : {centre, centre + glm::vec3(0.0f, 1.0f, 0.0f)}) {
+        const glm::vec3 seen = inCamera(start, p);
+        for (const Camera& frame : frames) {
+            const glm::vec3 now = inCamera(frame, p);
+            EXPECT_NEAR(now.x, seen.x, 1e-5f);
+            EXPECT_NEAR(now.y, seen.y, 1e-5f);
+            EXPECT_NEAR(now.z, seen.z, 1e-5f);
+            EXPECT_FLOAT_EQ(frame.pitchDegrees, start.pitchDegrees);
+            EXPECT_NEAR(frame.position.y, start.position.y, 1e-6f);
+            EXPECT_NEAR(
+                glm::length(glm::vec2(frame.position.x - centre.x, frame.position.z - centre.z)),
+                glm::length(glm::vec2(start.position.x - centre.x, start.position.z - centre.z)),
+                1e-5f);
+        }
+    }
+    // Evenly spaced, a quarter turn every three frames, and the camera goes round once.
+    const glm::vec3 quarter = frames[3].position - centre;
+    const glm::vec3 offset = start.position - centre;
+    EXPECT_NEAR(glm::dot(glm::vec2(quarter.x, quarter.z), glm::vec2(offset.x, offset.z)), 0.0f,
+                1e-5f);
+    EXPECT_NEAR(std::fabs(std::remainder(frames[6].yawDegrees - start.yawDegrees, 360.0f)), 180.0f,
+                1e-4f);
 }
 
 } // namespace
