@@ -196,7 +196,8 @@ public:
         return true;
     }
 
-    // "split": {"divider": number in [0, 1], "side": "left" | "right", "other": file name}.
+    // "split": {"divider": number in [0, 1], "side": "left" | "right", "other": file name,
+    // "difference": number > 0}.
     bool readSplit(const Json& value) {
         if (!value.is_object()) {
             return fail("split", "must be an object, got " + shown(value));
@@ -219,6 +220,12 @@ public:
                     return fail("split.other", "must be a file name, got " + shown(child));
                 }
                 split.other = child.get<std::string>();
+            } else if (key == "difference") {
+                if (std::string why = asFloat(child, split.difference);
+                    !why.empty() || !(split.difference > 0.0f) || std::isinf(split.difference)) {
+                    return fail("split.difference",
+                                "must be a positive number, got " + shown(child));
+                }
             } else {
                 return fail("split." + key, "unknown key");
             }
@@ -427,6 +434,9 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
         j["split"] = {{"divider", shortFloat(split.divider)}, {"side", split.side}};
         if (!split.other.empty()) {
             j["split"]["other"] = split.other;
+        }
+        if (split.difference > 0.0f) {
+            j["split"]["difference"] = shortFloat(split.difference);
         }
     }
     if (extras.bookmarks.any()) {
