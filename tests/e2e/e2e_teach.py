@@ -16,6 +16,7 @@ LAB_CAMERA = (0.0, 0.0, -3.0)
 SHADOW_CLEAR = (255, 255, 0)  # ray_overlay_geometry.h's overlayColour
 SHADOW_BLOCKED = (255, 0, 0)
 CAMERA_RAY = (0, 255, 0)
+PATH = (255, 0, 255)
 FOREVER = ["--frames", "1000000"]  # --readback needs --frames; Escape ends the run before
 
 
@@ -50,7 +51,8 @@ def test_ray_overlay(env):
     the light (yellow, or red up to its blocker when blocked), not in the screenshot (which is
     still raylab-render's picture). The rays stay where they are in the world: after the camera
     moves forward, the window shows the shadow ray and the camera ray (green, from where the
-    camera was) where the moved camera projects them."""
+    camera was) where the moved camera projects them. With the path tracer the inspected path's
+    surfaces are joined by magenta lines."""
     width, height = 480, 360
     pixel = (241, 343)  # a floor pixel that sees the light
     size = ["--width", str(width), "--height", str(height), "--spp", "2"]
@@ -100,6 +102,30 @@ def test_ray_overlay(env):
                   f"has no camera-ray colour there")
             drawn += 1
     check(drawn >= 2, "the moved camera sees too little of the camera ray to check it")
+
+    # With the path tracer, the inspected path is drawn from surface to surface.
+    pixel = (200, 200)
+    flags = size + ["--integrator", "path"]
+    seen = json.loads(env.run_ok(env.render, flags + ["--inspect", f"{pixel[0]},{pixel[1]}"]).stdout)
+    path = [v["point"] for v in seen.get("path", [])]
+    check(len(path) >= 3, f"pixel {pixel}'s path has only {len(path)} surfaces")
+    viewer = Viewer(env, flags + ["--no-panel", "--readback", "path.png"] + FOREVER)
+    try:
+        viewer.shot_when(lambda png, s: s["image"]["samples"] == 2, "no path-traced picture")
+        viewer.xdotool("mousemove", "--window", viewer.window, str(pixel[0]), str(pixel[1]))
+        viewer.xdotool("keydown", "ctrl", "click", "1", "keyup", "ctrl")
+        time.sleep(0.5)
+        viewer.quit()
+    finally:
+        viewer.kill()
+    back = read_png(env.path("path.png"))
+    for a, b in zip(path, path[1:]):
+        for t in (0.3, 0.5, 0.7):
+            (x, y), _ = project(lerp(a, b, t), LAB_CAMERA, width, height)
+            if 0 <= x < width and 0 <= y < height:
+                check(has_colour_near(back, x, y, PATH),
+                      f"the path's point at {t} of {a} -> {b} projects to ({x:.1f}, {y:.1f}) but "
+                      f"the window has no path colour there")
 
 
 def test_hover_readout(env):
