@@ -46,6 +46,27 @@ def count_colour(png, colour):
     return sum(1 for i in range(0, len(png.rgba), 4) if tuple(png.rgba[i:i + 3]) == colour)
 
 
+def inspect_with_render(env, flags, pixel):
+    """raylab-render --inspect's JSON of `pixel`."""
+    result = env.run_ok(env.render, flags + ["--inspect", f"{pixel[0]},{pixel[1]}"])
+    return json.loads(result.stdout)
+
+
+def inspect_in_window(env, flags, readback, pixel):
+    """A viewer with `flags` whose picture reached 2 samples, after a Ctrl+click on `pixel`; its
+    window is read back to `readback` when it quits."""
+    viewer = Viewer(env, flags + ["--no-panel", "--readback", readback] + FOREVER)
+    try:
+        viewer.shot_when(lambda png, s: s["image"]["samples"] == 2, "no picture at the cap")
+        viewer.xdotool("mousemove", "--window", viewer.window, str(pixel[0]), str(pixel[1]))
+        viewer.xdotool("keydown", "ctrl", "click", "1", "keyup", "ctrl")
+        time.sleep(0.5)
+    except Failure:
+        viewer.kill()
+        raise
+    return viewer
+
+
 def test_ray_overlay(env):
     """Ctrl+click draws the pixel's rays over the picture: the shadow ray from the hit towards
     the light (yellow, or red up to its blocker when blocked), not in the screenshot (which is
@@ -56,15 +77,11 @@ def test_ray_overlay(env):
     width, height = 480, 360
     pixel = (241, 343)  # a floor pixel that sees the light
     size = ["--width", str(width), "--height", str(height), "--spp", "2"]
-    seen = json.loads(env.run_ok(env.render, size + ["--inspect", f"{pixel[0]},{pixel[1]}"]).stdout)
+    seen = inspect_with_render(env, size, pixel)
     check(seen["hit"], f"pixel {pixel} misses the box")
     env.run_ok(env.render, size + ["-o", "expected.png"])
-    viewer = Viewer(env, size + ["--no-panel", "--readback", "back.png"] + FOREVER)
+    viewer = inspect_in_window(env, size, "back.png", pixel)
     try:
-        viewer.shot_when(lambda png, s: s["image"]["samples"] == 2, "no picture at the cap")
-        viewer.xdotool("mousemove", "--window", viewer.window, str(pixel[0]), str(pixel[1]))
-        viewer.xdotool("keydown", "ctrl", "click", "1", "keyup", "ctrl")
-        time.sleep(0.5)
         shot, _ = viewer.key_shot()
         same_pixels(shot, read_png(env.path("expected.png")),
                     "the screenshot with the rays drawn vs raylab-render")
@@ -106,15 +123,11 @@ def test_ray_overlay(env):
     # With the path tracer, the inspected path is drawn from surface to surface.
     pixel = (200, 200)
     flags = size + ["--integrator", "path"]
-    seen = json.loads(env.run_ok(env.render, flags + ["--inspect", f"{pixel[0]},{pixel[1]}"]).stdout)
+    seen = inspect_with_render(env, flags, pixel)
     path = [v["point"] for v in seen.get("path", [])]
     check(len(path) >= 3, f"pixel {pixel}'s path has only {len(path)} surfaces")
-    viewer = Viewer(env, flags + ["--no-panel", "--readback", "path.png"] + FOREVER)
+    viewer = inspect_in_window(env, flags, "path.png", pixel)
     try:
-        viewer.shot_when(lambda png, s: s["image"]["samples"] == 2, "no path-traced picture")
-        viewer.xdotool("mousemove", "--window", viewer.window, str(pixel[0]), str(pixel[1]))
-        viewer.xdotool("keydown", "ctrl", "click", "1", "keyup", "ctrl")
-        time.sleep(0.5)
         viewer.quit()
     finally:
         viewer.kill()
