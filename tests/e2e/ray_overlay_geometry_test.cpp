@@ -5,6 +5,7 @@
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"
 #include "core/lights/emitters.h"
+#include "inspected_pixel.h"
 #include "ray_overlay_geometry.h"
 
 #include <glm/geometric.hpp>
@@ -163,6 +164,27 @@ TEST(RayOverlay, TheLabsShadowRaysProjectFromThePixelToTheLightOrTheBlocker) {
         }
     }
     EXPECT_GT(blockedSeen, 0) << "none of the pixels is in a block's shadow";
+}
+
+TEST(RayOverlay, APinnedPixelKeepsItsCameraAndSizeAndFollowsTheOtherSettings) {
+    RenderSettings picked;
+    picked.width = 120;
+    picked.height = 90;
+    const InspectedPixel pixel{30, 40, picked.camera, picked.width, picked.height};
+    EXPECT_TRUE(seenAsPicked(picked, pixel));
+    RenderSettings now = picked;
+    now.camera.position.z += 0.1f;
+    now.width = 200;
+    now.shadowEpsilon = 0.0f;
+    EXPECT_FALSE(seenAsPicked(now, pixel));
+    const RenderSettings used = inspectionSettings(now, pixel);
+    EXPECT_EQ(used.camera, picked.camera);
+    EXPECT_EQ(used.width, 120);
+    EXPECT_EQ(used.height, 90);
+    EXPECT_EQ(used.shadowEpsilon, 0.0f);
+    now.camera = picked.camera;
+    now.width = picked.width;
+    EXPECT_TRUE(seenAsPicked(now, pixel));
 }
 
 TEST(RayOverlay, ColoursAreSaturatedAndDistinct) {
