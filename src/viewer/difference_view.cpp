@@ -11,7 +11,7 @@ const char* toString(CompareMode mode) {
 
 std::array<uint8_t, 3> differenceColour(float d, float scale) {
     const float t = std::clamp(d / scale, -1.0f, 1.0f);
-    if (!(t == t)) { // NaN (0 / 0 cannot happen for scale > 0; a NaN value can)
+    if (std::isnan(t)) { // a NaN value: shown as no difference
         return {0, 0, 0};
     }
     const auto level = static_cast<uint8_t>(std::lround(255.0f * std::abs(t)));
