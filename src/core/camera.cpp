@@ -157,6 +157,16 @@ Ray PrimaryRays::through(float px, float py) const {
     return ray;
 }
 
+glm::vec3 PrimaryRays::cameraFrom(const glm::vec3& world) const {
+    const glm::vec3 v = world - origin;
+    return {glm::dot(v, right), glm::dot(v, up), glm::dot(v, forward)};
+}
+
+glm::vec2 PrimaryRays::imageFrom(const glm::vec3& cameraPoint) const {
+    const float scale = focal / cameraPoint.z;
+    return {halfWidth + cameraPoint.x * scale, halfHeight - cameraPoint.y * scale};
+}
+
 void PrimaryRays::through8(const float* px, const float* py, int count, RayPacket& rays) const {
     static const bool simd = bvhSimdSupported();
     if (simd) {

@@ -7,6 +7,7 @@
 #include "ray_packet.h"
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -66,6 +67,13 @@ struct PrimaryRays {
     // Lane i of rays = through(px[i], py[i]) bit for bit, for i < count <= 8, and rays.lanes =
     // those lanes (8 lanes at once where the CPU has AVX2). px and py are read for i < count only.
     void through8(const float* px, const float* py, int count, RayPacket& rays) const;
+
+    // The inverse of through(), for drawing world points over the picture. cameraFrom: a world
+    // point in the camera's frame (x along right, y along up, z along forward: z is the depth in
+    // world units, > 0 in front of the camera). imageFrom: where a camera-frame point with z > 0
+    // is seen, in pixel units, y counting down: through(imageFrom(c)) points at c.
+    glm::vec3 cameraFrom(const glm::vec3& world) const;
+    glm::vec2 imageFrom(const glm::vec3& cameraPoint) const;
 };
 
 } // namespace raylab

@@ -223,7 +223,8 @@ public:
         return true;
     }
 
-    // "split": {"divider": number in [0, 1], "side": "left" | "right", "other": file name}.
+    // "split": {"divider": number in [0, 1], "side": "left" | "right", "other": file name,
+    // "difference": number > 0}.
     bool readSplit(const Json& value) {
         if (!value.is_object()) {
             return fail("split", "must be an object, got " + shown(value));
@@ -246,6 +247,12 @@ public:
                     return fail("split.other", "must be a file name, got " + shown(child));
                 }
                 split.other = child.get<std::string>();
+            } else if (key == "difference") {
+                if (std::string why = asFloat(child, split.difference);
+                    !why.empty() || !(split.difference > 0.0f) || std::isinf(split.difference)) {
+                    return fail("split.difference",
+                                "must be a positive number, got " + shown(child));
+                }
             } else {
                 return fail("split." + key, "unknown key");
             }
@@ -454,6 +461,9 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
         j["split"] = {{"divider", shortFloat(split.divider)}, {"side", split.side}};
         if (!split.other.empty()) {
             j["split"]["other"] = split.other;
+        }
+        if (split.difference > 0.0f) {
+            j["split"]["difference"] = shortFloat(split.difference);
         }
     }
     const auto cameraJson = [](const Camera& c) {

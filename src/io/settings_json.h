@@ -11,10 +11,12 @@
 //    "threads":  0,
 //    "display":  {"mode": "lab", "exposure": 0},
 //    "scene":    "cornell",                       <- optional; only written when asked for
-//    "split":    {"divider": 0.5, "side": "left", "other": "raylab-0001-right.json"},
+//    "split":    {"divider": 0.5, "side": "left", "other": "raylab-0001-right.json",
+//                 "difference": 0.1},
 //    "bookmarks": [null, {"position": [0, 0, -3], "yaw": 0, "pitch": 0, "fov": 53.13}, ...]}
 //                 <- optional: a screenshot of one side of the viewer's A/B split; these are that
-//                    side's settings, `other` names the file of the other side's;
+//                    side's settings, `other` names the file of the other side's, `difference`
+//                    (optional) the scale of a difference picture (SplitRecord);
 //                 "bookmarks": the viewer's camera bookmarks, 9 slots (optional)
 // (also "integrator", "emission", a light's "radius" and the display's "view": see toJson).
 // Floats are written in the shortest form that reads back to the same float, so a save and a load
@@ -41,6 +43,10 @@ struct SplitRecord {
     std::string side;     // "left" or "right"
     std::string other;    // the file of the other side's settings (a name beside this one);
                           // empty (not written) where it is not known, as in a PNG's chunk
+    // > 0: the picture was not a wipe but the signed difference left - right, shown with this
+    // value (W/m^2) in full colour (the viewer's difference_view.h), written "difference": scale;
+    // 0: a wipe (not written).
+    float difference = 0.0f;
     bool operator==(const SplitRecord&) const = default;
 };
 

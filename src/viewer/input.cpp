@@ -108,6 +108,8 @@ void InputCollector::onMouseButton(GLFWwindow* window, int button, int action, i
             events.inspectPressed = true;
         } else if ((mods & GLFW_MOD_ALT) != 0) {
             events.orbitPressed = true;
+        } else if ((mods & GLFW_MOD_SHIFT) != 0) {
+            events.rectanglePressed = true;
         } else {
             events.leftPressed = true;
         }
@@ -182,6 +184,7 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_B: return Command::ToggleSplit;
     case GLFW_KEY_V: return Command::NextView;
     case GLFW_KEY_K: return Command::KeepSnapshot;
+    case GLFW_KEY_M: return Command::NextCompareMode;
     case GLFW_KEY_H:
     case GLFW_KEY_SLASH: return Command::ToggleKeyList; // H, or ? (Shift + /)
     case GLFW_KEY_Z: return Command::Undo;

@@ -29,8 +29,9 @@ enum class Command {
     NextView,
     KeepSnapshot,
     ToggleKeyList,
-    Undo, // Z, with Ctrl
-    Redo, // Y, or Z with Shift, with Ctrl
+    NextCompareMode, // M: the split's wipe <-> difference
+    Undo,            // Z, with Ctrl
+    Redo,            // Y, or Z with Shift, with Ctrl
 };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost
@@ -50,6 +51,7 @@ struct InputEvents {
     double scroll = 0.0;               // wheel notches, positive = away from the user
     bool leftPressed = false;          // the left button went down
     bool inspectPressed = false;       // ... with Ctrl held: look inside the pixel under it
+    bool rectanglePressed = false;     // ... with Shift held: drag a rectangle to read its mean
     bool orbitPressed = false;         // the right button (or Alt + left) went down: orbit
     bool panPressed = false;           // the middle button went down: pan
     bool keyboard = false;             // a key (press, repeat, release) or a character arrived

@@ -89,8 +89,20 @@ void lightTransportSection(RenderSettings& edit, PanelState& state, const PanelV
     }
     ImGui::EndDisabled();
     if (state.split) {
-        ImGui::SliderFloat("divider", &state.divider, 0.0f, 1.0f, "%.2f",
-                           ImGuiSliderFlags_AlwaysClamp);
+        int mode = state.compareMode == CompareMode::Difference ? 1 : 0;
+        if (ImGui::Combo("compare (M)", &mode, "wipe\0difference\0")) {
+            state.compareMode = mode == 1 ? CompareMode::Difference : CompareMode::Wipe;
+        }
+        if (state.compareMode == CompareMode::Difference) {
+            ImGui::SliderFloat("full colour", &state.differenceScale, kMinDifferenceScale,
+                               kMaxDifferenceScale, "%.4g W/m2",
+                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+            ImGui::TextUnformatted("showing: left - right (red > 0, blue < 0)");
+        } else {
+            ImGui::SliderFloat("divider", &state.divider, 0.0f, 1.0f, "%.2f",
+                               ImGuiSliderFlags_AlwaysClamp);
+            ImGui::TextUnformatted("showing: a wipe (hold F: a flip to the right)");
+        }
         if (state.compareSnapshot && state.snapshot) {
             const std::vector<std::string> differences =
                 settingsDifferences(edit, splitCompare(edit, &*state.snapshot));
@@ -302,6 +314,29 @@ void inspectorSection(const PanelView& view) {
     }
 }
 
+// The pixel under the cursor and the rectangle dragged with Shift: linear values (the film's
+// mean, or in the split's difference the signed difference) and the bytes shown.
+void readoutSection(const PanelState& state, const PanelView& view) {
+    if (!ImGui::CollapsingHeader("Under the cursor", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const char* value =
+        state.split && state.compareMode == CompareMode::Difference ? "left - right" : "R";
+    if (const PixelReadout* h = view.hover) {
+        ImGui::Text("pixel %d, %d: %s %.4g %.4g %.4g", h->x, h->y, value,
+                    static_cast<double>(h->linear.x), static_cast<double>(h->linear.y),
+                    static_cast<double>(h->linear.z));
+        ImGui::Text("shown %d %d %d", h->display[0], h->display[1], h->display[2]);
+    } else {
+        ImGui::TextDisabled("point at the picture to read a pixel");
+    }
+    if (const RectangleMean* r = view.rectangle) {
+        ImGui::Text("%d,%d - %d,%d (%ld px)", r->rectangle.x0, r->rectangle.y0, r->rectangle.x1,
+                    r->rectangle.y1, r->pixels);
+        ImGui::Text("mean %s %.4g %.4g %.4g", value, r->mean.x, r->mean.y, r->mean.z);
+    }
+}
+
 void statisticsSection(const PanelView& view) {
     if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen) ||
         view.numbers == nullptr) {
@@ -388,6 +423,7 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
     statisticsSection(view);
     RenderSettings edit = state.settings;
     inspectorSection(view);
+    readoutSection(state, view);
     lightSection(edit, view);
     lightTransportSection(edit, state, view, actions);
     viewSection(edit);

@@ -6,8 +6,11 @@
 
 #include "core/integrators/pixel_inspection.h"
 #include "core/render_settings.h"
+#include "difference_view.h"
+#include "inspected_pixel.h"
 #include "io/settings_json.h"
 #include "panel_numbers.h"
+#include "pixel_readout.h"
 
 #include <array>
 #include <cstddef>
@@ -28,13 +31,17 @@ struct PanelState {
     // integrator (splitCompare, split_view.h); divider: the fraction of the width on the left.
     bool split = false;
     float divider = 0.5f;
+    // How the split shows its sides (M switches): a wipe at the divider, or the signed difference
+    // left - right (live - A) with differenceScale (W/m^2) in full colour.
+    CompareMode compareMode = CompareMode::Wipe;
+    float differenceScale = kDefaultDifferenceScale;
     // Snapshot A (K, or the panel's button): settings kept to compare with. With compareSnapshot
     // the split's right side shows A instead of the other integrator (splitCompare).
     std::optional<RenderSettings> snapshot;
     bool compareSnapshot = false;
     CameraBookmarks bookmarks; // Ctrl+1..9 stores the camera, 1..9 returns to it
-    // The pixel looked inside (Ctrl+click), in render pixels; its numbers are PanelView's.
-    std::optional<std::array<int, 2>> inspected;
+    // The pixel looked inside (Ctrl+click); its numbers are PanelView's.
+    std::optional<InspectedPixel> inspected;
     std::string scenePath; // the path field
     std::string refused;   // why the last edit was refused; empty when it was not
     std::string status;    // the last screenshot or scene-load message
@@ -51,6 +58,9 @@ struct PanelView {
     bool hasEmitters = false; // the scene has emitting triangles (their scale is shown)
     // The inspected pixel's numbers (core's inspectPixel), when a pixel is inspected.
     const PixelInspection* inspection = nullptr;
+    // The pixel under the cursor and the Shift + drag rectangle's mean (picture_readouts.h).
+    const PixelReadout* hover = nullptr;
+    const RectangleMean* rectangle = nullptr;
     // The statistics shown: a copy refreshed a few times a second (PanelNumbersRefresh), so that
     // an untouched panel draws the same pixels from frame to frame. Null: none shown.
     const PanelNumbers* numbers = nullptr;

@@ -14,6 +14,7 @@
 #include "core/render/display_transform.h"
 #include "core/render/film.h"
 #include "core/render/renderer.h"
+#include "difference_view.h"
 #include "split_view.h"
 
 namespace raylab::viewer {
@@ -86,7 +87,10 @@ bool samePicture(const RenderJob& a, const RenderJob& b) {
 
 bool sameJob(const RenderJob& a, const RenderJob& b) {
     return a.scene == b.scene && a.settings == b.settings && a.compare == b.compare &&
-           a.divider == b.divider;
+           a.divider == b.divider &&
+           (!a.compare ||
+            (a.compareMode == b.compareMode &&
+             (a.compareMode != CompareMode::Difference || a.differenceScale == b.differenceScale)));
 }
 
 const RenderSettings& sideSettings(const RenderJob& job, int side) {
@@ -150,6 +154,7 @@ void RenderWorker::run() {
     uint64_t published = 0;
     Film previewFilm;
     std::vector<uint8_t> previewBgra[2];
+    Framebuffer sideMeans[2]; // each side's mean, for a difference (previews too)
     ShownImage staging;
 
     const auto publish = [&](ShownImage& picture) {
@@ -180,6 +185,9 @@ void RenderWorker::run() {
         }
     };
     const auto sidesOf = [](const RenderJob& j) { return j.compare ? 2 : 1; };
+    const auto differenceOf = [](const RenderJob& j) {
+        return j.compare && j.compareMode == CompareMode::Difference;
+    };
     // The side whose film gets the next pass: the one with fewer samples below its cap (the
     // left on a tie), or -1 when every side has reached its cap.
     const auto nextSide = [&](const RenderJob& j) {
@@ -259,6 +267,9 @@ void RenderWorker::run() {
                     previewBgra[i].resize(4 * pixelCount(small));
                     previewFilm.toDisplay(previewBgra[i], small.display, small.exposure,
                                           PixelOrder::Bgra);
+                    if (differenceOf(job)) {
+                        previewFilm.mean(sideMeans[i]);
+                    }
                 }
                 setInPreview(false);
                 if (!finished) {
@@ -268,7 +279,11 @@ void RenderWorker::run() {
                 const double seconds = secondsSince(start);
                 tally(&PassTotals::previews, seconds);
                 secondsPerPixel = seconds / static_cast<double>(sides * smallWidth * smallHeight);
-                if (sides == 2) {
+                if (differenceOf(job)) {
+                    Framebuffer difference;
+                    composeDifference(sideMeans[0], sideMeans[1], job.differenceScale, difference,
+                                      previewBgra[0], PixelOrder::Bgra);
+                } else if (sides == 2) {
                     composeSplit(previewBgra[0], previewBgra[1], smallWidth, smallHeight,
                                  job.divider, previewBgra[0]);
                 }
@@ -280,6 +295,8 @@ void RenderWorker::run() {
                 staging.settings.height = smallHeight;
                 staging.compare.reset();
                 staging.divider = job.divider;
+                staging.compareMode = job.compareMode;
+                staging.differenceScale = job.differenceScale;
                 staging.scene = job.scene;
                 staging.jobSerial = serial;
                 staging.preview = true;
@@ -329,10 +346,18 @@ void RenderWorker::run() {
         // it.
         staging.bgra.width = settings.width;
         staging.bgra.height = settings.height;
+        const bool difference = differenceOf(job);
         if (sides == 1 && !displayed) {
             staging.bgra.pixels.resize(4 * pixelCount(settings));
             films[0].toDisplay(staging.bgra.pixels, settings.display, settings.exposure,
                                PixelOrder::Bgra);
+        } else if (difference) {
+            // The signed difference of the two sides' means: the bytes and the linear picture.
+            films[0].mean(sideMeans[0]);
+            films[1].mean(sideMeans[1]);
+            staging.bgra.pixels.resize(4 * pixelCount(settings));
+            composeDifference(sideMeans[0], sideMeans[1], job.differenceScale, staging.linear,
+                              staging.bgra.pixels, PixelOrder::Bgra);
         } else if (sides == 2) {
             for (int i = 0; i < 2; ++i) {
                 const RenderSettings& side = sideSettings(job, i);
@@ -345,7 +370,11 @@ void RenderWorker::run() {
             composeSplit(sideBgra[0], sideBgra[1], settings.width, settings.height, job.divider,
                          staging.bgra.pixels);
         }
-        if (job.keepLinear) {
+        if (difference) {
+            if (!job.keepLinear) {
+                staging.linear = Framebuffer();
+            }
+        } else if (job.keepLinear) {
             films[0].mean(staging.linear);
             if (sides == 2) {
                 Framebuffer right;
@@ -370,6 +399,8 @@ void RenderWorker::run() {
             staging.compare->samplesPerPixel = static_cast<int>(films[1].samples());
         }
         staging.divider = job.divider;
+        staging.compareMode = job.compareMode;
+        staging.differenceScale = job.differenceScale;
         staging.scene = job.scene;
         staging.jobSerial = serial;
         staging.preview = false;

@@ -43,12 +43,18 @@ struct RenderJob {
     // passes between them. divider: the fraction of the width shown from the left side.
     std::optional<RenderSettings> compare{};
     float divider = 0.5f;
+    // How a split shows its two sides: wiped at the divider, or their signed difference on a
+    // colour scale with `differenceScale` (W/m^2) in full colour (difference_view.h). Like the
+    // divider, they only re-map the samples.
+    CompareMode compareMode = CompareMode::Wipe;
+    float differenceScale = kDefaultDifferenceScale;
 };
 
 // True when two jobs give the same accumulated samples: the same scene and sameSamples() settings
 // on each side (display, exposure, cap, thread count and divider do not change the samples).
 bool samePicture(const RenderJob& a, const RenderJob& b);
-// True when every field of the two jobs is equal (keepLinear aside).
+// True when every field of the two jobs is equal (keepLinear aside; the compare mode and scale
+// only for split jobs).
 bool sameJob(const RenderJob& a, const RenderJob& b);
 // The settings of side 0 (left, or the whole picture) or 1 (right of a split).
 const RenderSettings& sideSettings(const RenderJob& job, int side);

@@ -60,6 +60,19 @@ std::string runStatsJson(const RunStats& stats) {
         {"scene", stats.scene},
         {"triangles", stats.triangles},
     };
+    if (stats.hover) {
+        const PixelReadout& h = *stats.hover;
+        json["hover"] = {{"pixel", {h.x, h.y}},
+                         {"linear", {h.linear.x, h.linear.y, h.linear.z}},
+                         {"display", {h.display[0], h.display[1], h.display[2]}}};
+    }
+    if (stats.rectangle) {
+        const RectangleMean& r = *stats.rectangle;
+        json["rectangle"] = {{"from", {r.rectangle.x0, r.rectangle.y0}},
+                             {"to", {r.rectangle.x1, r.rectangle.y1}},
+                             {"pixels", r.pixels},
+                             {"mean", {r.mean.x, r.mean.y, r.mean.z}}};
+    }
     return json.dump(2) + "\n";
 }
 

@@ -2,7 +2,10 @@
 // What a viewer run measured, written by --stats FILE as one JSON object when the viewer quits:
 // frame rates of the window and pass times of the tracer, without any timed test.
 
+#include "pixel_readout.h"
+
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace raylab::viewer {
@@ -47,6 +50,10 @@ struct RunStats {
     int samples = 0;
     std::string scene;
     uint64_t triangles = 0;
+    // The panel's readouts at the end: the last pixel read under the cursor, and the mean of the
+    // last rectangle dragged (Shift + left drag), when there were any.
+    std::optional<PixelReadout> hover;
+    std::optional<RectangleMean> rectangle;
 };
 
 // The JSON text --stats writes: redraw ("on demand" or "continuous"), frames_shown, seconds,
@@ -54,7 +61,9 @@ struct RunStats {
 // pictures_per_second, views_shown, views_per_second, frame_ms {mean, max} (frame responses),
 // frames_over_33ms, draw_ms {mean, max}, minimised_seconds, upload_ms {count, mean, max}, passes,
 // pass_ms {mean, min, max}, previews, preview_ms {mean, min, max}, cancelled_passes, samples,
-// render_width, render_height, scene, triangles. Times in milliseconds unless named seconds.
+// render_width, render_height, scene, triangles; when known, hover {pixel [x, y], linear [r, g, b],
+// display [r, g, b]} and rectangle {from [x0, y0], to [x1, y1], pixels, mean [r, g, b]}. Times in
+// milliseconds unless named seconds.
 std::string runStatsJson(const RunStats& stats);
 
 // Writes runStatsJson to `path` atomically; false with a one-line error.

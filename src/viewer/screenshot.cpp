@@ -34,11 +34,17 @@ std::string rightSettingsPathFor(const std::string& path) {
 
 // The split records of a split picture whose image is at `path`: the left side's settings go to
 // the image's own .json (and its PNG chunk), the right side's to a -right.json beside it.
+// A difference picture's records carry its scale.
+float differenceOf(const ShownImage& shown) {
+    return shown.compareMode == CompareMode::Difference ? shown.differenceScale : 0.0f;
+}
 SplitRecord leftRecord(const ShownImage& shown, const std::string& path) {
-    return {shown.divider, "left", std::filesystem::path(rightSettingsPathFor(path)).filename()};
+    return {shown.divider, "left", std::filesystem::path(rightSettingsPathFor(path)).filename(),
+            differenceOf(shown)};
 }
 SplitRecord rightRecord(const ShownImage& shown, const std::string& path) {
-    return {shown.divider, "right", std::filesystem::path(settingsPathFor(path)).filename()};
+    return {shown.divider, "right", std::filesystem::path(settingsPathFor(path)).filename(),
+            differenceOf(shown)};
 }
 
 // The extras of the left (or only) side's settings: the split record when the picture is split

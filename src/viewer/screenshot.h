@@ -6,6 +6,11 @@
 // writes the same bytes. A split picture (ShownImage::compare) records both sides: the image's
 // .json holds the left side's settings and a "split" record, a -right.json beside it the right
 // side's, so that raylab-render reproduces each side from its file.
+// A screenshot of the difference (ShownImage::compareMode) is what the window shows: the PNG
+// holds the colour scale of left - right, the linear picture (.exr, .pfm) the signed difference
+// per channel, and both sides' files record "difference": the scale. raylab-render reproduces
+// it from the two sides' files: render each as PFM, subtract, and map with
+// differenceColour (difference_view.h).
 
 #include "io/settings_json.h"
 #include "shown_image.h"

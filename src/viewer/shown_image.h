@@ -5,6 +5,7 @@
 #include "core/render/film.h"
 #include "core/render/framebuffer.h"
 #include "core/render_settings.h"
+#include "difference_view.h"
 #include "io/image_io.h"
 #include "loaded_scene.h"
 
@@ -19,8 +20,9 @@ struct ShownImage {
     // At render resolution, row 0 at the top, bytes B, G, R, A (PixelOrder::Bgra: the order the
     // window's texture keeps, so uploading it is a copy). rgbaOf() gives it as RGBA.
     Rgba8Image bgra;
-    // The linear picture (sums / samples, as raylab-render computes it); only when the job asked
-    // for it (RenderJob::keepLinear), and never for a preview.
+    // The linear picture (sums / samples, as raylab-render computes it; a difference: see
+    // compareMode); only when the job asked for it (RenderJob::keepLinear), and never for a
+    // preview.
     Framebuffer linear;
     // What the picture is, exactly: width and height are the image's, samplesPerPixel the samples
     // accumulated so far, display and exposure those applied. For a non-preview image,
@@ -30,6 +32,11 @@ struct ShownImage {
     // divider, the fraction of the width shown from `settings`. Empty for a whole picture.
     std::optional<RenderSettings> compare;
     float divider = 0.5f;
+    // A split shown as the difference (difference_view.h): bgra is the colour scale of
+    // settings' side - compare's side at differenceScale, and linear (when kept) the signed
+    // difference per channel.
+    CompareMode compareMode = CompareMode::Wipe;
+    float differenceScale = kDefaultDifferenceScale;
     std::shared_ptr<const LoadedScene> scene;
     uint64_t jobSerial = 0;     // RenderWorker::submit's serial of the job this picture shows
     bool preview = false;       // a coarse preview upscaled to render resolution: not reproducible

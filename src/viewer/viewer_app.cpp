@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <glad/gl.h>
 #include <imgui.h>
 #include <string>
@@ -26,6 +25,8 @@
 #include "panel_context.h"
 #include "panel_numbers.h"
 #include "panel_settings_refresh.h"
+#include "picture_readouts.h"
+#include "ray_overlay_geometry.h"
 #include "redraw_schedule.h"
 #include "render_worker.h"
 #include "run_stats.h"
@@ -146,6 +147,11 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                 meanIndirectWanted = true;
             } else if (*command == Command::ToggleSplit) {
                 panel.split = !panel.split;
+            } else if (*command == Command::NextCompareMode) {
+                // The difference needs two sides: it turns the split on.
+                panel.compareMode = panel.compareMode == CompareMode::Wipe ? CompareMode::Difference
+                                                                           : CompareMode::Wipe;
+                panel.split = panel.split || panel.compareMode == CompareMode::Difference;
             } else if (*command == Command::Undo || *command == Command::Redo) {
                 const auto down = [window](int a, int b) {
                     return glfwGetKey(window, a) == GLFW_PRESS ||
@@ -182,15 +188,16 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
         int px = 0, py = 0;
         if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, panel.settings.width,
                              panel.settings.height, px, py)) {
-            panel.inspected = std::array<int, 2>{px, py};
+            panel.inspected = InspectedPixel{px, py, panel.settings.camera, panel.settings.width,
+                                             panel.settings.height};
             inspectWanted = true;
         }
     }
     applyOrbitAndPan(events, io.WantCaptureMouse, window, scene, framebufferWidth,
                      framebufferHeight, orbit, next);
     const bool press = events.leftPressed && !io.WantCaptureMouse;
-    const bool onDivider =
-        panel.split && dividerDrag.update(window, press, framebufferWidth, panel.divider);
+    const bool onDivider = panel.split && panel.compareMode == CompareMode::Wipe &&
+                           dividerDrag.update(window, press, framebufferWidth, panel.divider);
     applyDrag(window, drag, press && !onDivider, framebufferHeight, next);
     std::string ignored;
     acceptEdit(next, panel.settings, ignored);
@@ -258,7 +265,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     PanelContext gui(window.handle());
     ImageQuad quad;
     PanelCache panelCache;
-    if (!gui.ok() || !quad.create(error) || !panelCache.create(error)) {
+    OverlayLines overlayLines;
+    if (!gui.ok() || !quad.create(error) || !panelCache.create(error) ||
+        !overlayLines.create(error)) {
         std::fprintf(stderr, "raylab: %s\n", gui.ok() ? error.c_str() : "cannot start Dear ImGui");
         return 1;
     }
@@ -276,9 +285,10 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.bookmarks = command.bookmarks;
     panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
-    bool showKeys = false;                        // the list of keys and mouse gestures (H)
-    SettingsHistory history(panel.settings);      // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
-    OrbitControls orbit;                          // right drag orbits, middle drag pans
+    bool showKeys = false;                   // the list of keys and mouse gestures (H)
+    SettingsHistory history(panel.settings); // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
+    OrbitControls orbit;                     // right drag orbits, middle drag pans
+    PictureReadouts readouts; // the pixel under the cursor, a Shift + drag rectangle's mean
     std::string pendingDrop = options.drop;       // --drop FILE, dropped once the window shows
     std::optional<RenderSettings> pendingRestore; // a dropped screenshot's, for its scene
     float step = navigationStep(scene->scene.bounds());
@@ -299,22 +309,22 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     bool quit = false;
     int exitCode = 0;
     const bool scripted = command.frames > 0;
-    // PFM and EXR screenshots are written from the linear picture.
-    const bool keepLinear = !command.screenshot.empty() &&
-                            std::filesystem::path(command.screenshot).extension() != ".png";
     const bool needsFinal = !command.screenshot.empty() || !options.readback.empty();
     // Hands the panel's settings to the render thread when they make another job than the last.
-    // F12 writes the linear picture (.exr) beside the PNG: while a screenshot waits, the job
-    // asks for the linear picture too (a republish of the same samples, no new pass).
+    // Every picture comes with its linear picture: the panel reads the pixel under the cursor and
+    // a rectangle's mean from it, F12 writes it (.exr) beside the PNG, and PFM and EXR
+    // screenshots are written from it.
     const auto submitSettings = [&] {
-        RenderJob job{scene, panel.settings, keepLinear || screenshots > 0};
+        RenderJob job{scene, panel.settings, true};
         if (panel.split) {
             const RenderSettings* snapshot =
                 panel.compareSnapshot && panel.snapshot ? &*panel.snapshot : nullptr;
             job.compare = splitCompare(panel.settings, snapshot);
-            // Holding F flips to the right side (A) over the whole picture.
-            job.divider =
-                glfwGetKey(window.handle(), GLFW_KEY_F) == GLFW_PRESS ? 0.0f : panel.divider;
+            // Holding F flips to the right side (A) over the whole picture, in either mode.
+            const bool flip = glfwGetKey(window.handle(), GLFW_KEY_F) == GLFW_PRESS;
+            job.divider = flip ? 0.0f : panel.divider;
+            job.compareMode = flip ? CompareMode::Wipe : panel.compareMode;
+            job.differenceScale = panel.differenceScale;
         }
         if (submittedSerial == 0 || !sameJob(job, submitted) ||
             job.keepLinear != submitted.keepLinear) {
@@ -490,16 +500,15 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         applyInput(events, wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
                    showKeys, history, *scene, orbit, quit);
+        readouts.update(window.handle(), events, ImGui::GetIO().WantCaptureMouse, fbWidth, fbHeight,
+                        shown);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
         // JSON (raylab-render --inspect's) on standard output when a click asks, for scripts.
         std::optional<PixelInspection> inspection;
-        if (panel.inspected && ((*panel.inspected)[0] >= panel.settings.width ||
-                                (*panel.inspected)[1] >= panel.settings.height)) {
-            panel.inspected.reset(); // the picture got smaller
-        }
         if (panel.inspected) {
-            inspection = inspectPixel(scene->scene, scene->bvh, scene->emitters, panel.settings,
-                                      (*panel.inspected)[0], (*panel.inspected)[1]);
+            inspection = inspectPixel(scene->scene, scene->bvh, scene->emitters,
+                                      inspectionSettings(panel.settings, *panel.inspected),
+                                      panel.inspected->x, panel.inspected->y);
             if (inspectWanted) {
                 std::printf("%s\n", inspectionToJson(*inspection).c_str());
                 std::fflush(stdout);
@@ -516,6 +525,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             view.numbers = &panelNumbers.shown();
             view.hasEmitters = !scene->emitters.empty();
             view.inspection = inspection ? &*inspection : nullptr;
+            view.hover = readouts.hover() ? &*readouts.hover() : nullptr;
+            view.rectangle = readouts.rectangleMean() ? &*readouts.rectangleMean() : nullptr;
             // The panel draws a copy of the settings (panel_settings_refresh.h); edits, made
             // only while it is in use, when the copy is the live settings, count.
             const ImGuiIO& io = ImGui::GetIO();
@@ -577,12 +588,28 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             glClear(GL_COLOR_BUFFER_BIT);
         }
         quad.draw(fbWidth, fbHeight);
-        if (shown.compare) {
+        if (shown.compare && shown.compareMode == CompareMode::Wipe) {
             drawDivider(splitColumn(fbWidth, shown.divider), fbHeight);
         }
-        if (panel.inspected && panel.settings.width > 0 && panel.settings.height > 0) {
-            drawPixelMarker((*panel.inspected)[0], (*panel.inspected)[1], panel.settings.width,
-                            panel.settings.height, fbWidth, fbHeight);
+        if (inspection && shown.bgra.width > 0 && shown.bgra.height > 0) {
+            // Its rays, pinned in the world, seen with the camera of the picture shown (so they
+            // move with the picture); the marker while that picture is the one it was picked in.
+            RenderSettings picture = shown.settings;
+            picture.width = shown.bgra.width;
+            picture.height = shown.bgra.height;
+            const std::vector<ImageSegment> rays =
+                projectSegments(PrimaryRays(picture.camera, picture.width, picture.height),
+                                picture.width, picture.height, kNearDepthPerStep * step,
+                                inspectionSegments(*inspection, panel.inspected->camera.position));
+            overlayLines.draw(rays, picture.width, picture.height, fbWidth, fbHeight);
+            if (seenAsPicked(picture, *panel.inspected)) {
+                drawPixelMarker(panel.inspected->x, panel.inspected->y, picture.width,
+                                picture.height, fbWidth, fbHeight);
+            }
+        }
+        if (const auto& r = readouts.rectangle()) {
+            drawPixelRectangle(r->x0, r->y0, r->x1, r->y1, shown.bgra.width, shown.bgra.height,
+                               fbWidth, fbHeight);
         }
         if (screenshots > 0 && current && !shown.linear.pixels.empty()) {
             std::string path;
@@ -654,6 +681,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         stats.samples = shown.preview ? 0 : shown.settings.samplesPerPixel;
         stats.scene = scene->source;
         stats.triangles = scene->scene.triangles.size();
+        stats.hover = readouts.hover();
+        stats.rectangle = readouts.rectangleMean();
         if (!writeRunStats(options.stats, stats, error)) {
             std::fprintf(stderr, "raylab: %s\n", error.c_str());
             exitCode = 1;

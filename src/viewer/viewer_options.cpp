@@ -90,8 +90,8 @@ std::string viewerUsage() {
            "  --resolution-scale S  render at the window's size times S, 0.1..1 (default 1)\n"
            "  --readback FILE    test mode: with --frames, also save what the window shows (read\n"
            "                     back from the GL framebuffer) of the last frame as PNG\n"
-           "  --stats FILE       on quitting, write the window's frame rate and the tracer's pass\n"
-           "                     times (JSON) to FILE\n"
+           "  --stats FILE       on quitting, write the window's frame rate, the tracer's pass\n"
+           "                     times and the panel's last readouts (JSON) to FILE\n"
            "  --drop FILE        once the window shows, act as if FILE were dropped on it (a mesh\n"
            "                     opens; a raylab screenshot's .png or .json restores it)\n"
            "The sample cap is --spp (default " +

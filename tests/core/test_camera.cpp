@@ -54,6 +54,37 @@ TEST(Camera, PixelCentreRaysFollowTheLabFormula) {
     EXPECT_GT(topLeft.direction.y, 0.0f);
 }
 
+TEST(Camera, ImageFromInvertsThroughForAnyCamera) {
+    Camera camera;
+    camera.position = {0.3f, -0.2f, -2.5f};
+    camera.yawDegrees = 17.0f;
+    camera.pitchDegrees = -11.0f;
+    camera.verticalFovDegrees = 70.0f;
+    const PrimaryRays rays(camera, 320, 200);
+    for (const auto& [px, py] :
+         {std::pair{0.5f, 0.5f}, {319.5f, 10.0f}, {160.0f, 100.0f}, {-40.0f, 250.0f}}) {
+        const Ray ray = rays.through(px, py);
+        const float depth = 3.7f;
+        const glm::vec3 world = ray.origin + depth * ray.direction;
+        const glm::vec3 c = rays.cameraFrom(world);
+        EXPECT_GT(c.z, 0.0f);
+        EXPECT_NEAR(glm::length(c), depth, 1e-5f); // the camera's frame is orthonormal
+        const glm::vec2 image = rays.imageFrom(c);
+        EXPECT_NEAR(image.x, px, 1e-3f);
+        EXPECT_NEAR(image.y, py, 1e-3f);
+    }
+}
+
+TEST(Camera, TheLabCameraSeesTheLabLightAboveTheCentre) {
+    // The lab's light (0, 0.5, -0.7) from (0, 0, -3): depth 2.3, 0.5 up, f = H = 500.
+    const PrimaryRays rays(Camera{}, 500, 500);
+    const glm::vec3 c = rays.cameraFrom({0.0f, 0.5f, -0.7f});
+    expectVecNear(c, {0.0f, 0.5f, 2.3f}, 1e-6f);
+    const glm::vec2 image = rays.imageFrom(c);
+    EXPECT_NEAR(image.x, 250.0f, 1e-4f);
+    EXPECT_NEAR(image.y, 250.0f - 500.0f * 0.5f / 2.3f, 1e-3f);
+}
+
 TEST(Camera, YawTurnsLeftAndPitchLooksUp) {
     Camera camera;
     camera.yawDegrees = 90.0f;

@@ -62,5 +62,27 @@ TEST(ViewerRunStats, JsonHasRatesInFramesPerSecondAndTimesInMilliseconds) {
     EXPECT_EQ(json["scene"], "a \"quoted\" path.obj");
 }
 
+TEST(ViewerRunStats, ReadoutsAreWrittenOnlyWhenKnownWithTheirFloatsExact) {
+    RunStats stats;
+    EXPECT_FALSE(nlohmann::json::parse(runStatsJson(stats)).contains("hover"));
+    EXPECT_FALSE(nlohmann::json::parse(runStatsJson(stats)).contains("rectangle"));
+    stats.hover = PixelReadout{12, 34, {0.1f, 1.0f / 3.0f, 2.5f}, {26, 85, 255}};
+    RectangleMean mean;
+    mean.rectangle = {1, 2, 3, 5};
+    mean.pixels = 12;
+    mean.mean = {0.25, 0.125, 1.0 / 3.0};
+    stats.rectangle = mean;
+    const nlohmann::json json = nlohmann::json::parse(runStatsJson(stats));
+    EXPECT_EQ(json["hover"]["pixel"], nlohmann::json::array({12, 34}));
+    // The float read back as a double is the float itself.
+    EXPECT_EQ(static_cast<float>(json["hover"]["linear"][1].get<double>()), 1.0f / 3.0f);
+    EXPECT_EQ(json["hover"]["linear"][1].get<double>(), static_cast<double>(1.0f / 3.0f));
+    EXPECT_EQ(json["hover"]["display"], nlohmann::json::array({26, 85, 255}));
+    EXPECT_EQ(json["rectangle"]["from"], nlohmann::json::array({1, 2}));
+    EXPECT_EQ(json["rectangle"]["to"], nlohmann::json::array({3, 5}));
+    EXPECT_EQ(json["rectangle"]["pixels"], 12);
+    EXPECT_EQ(json["rectangle"]["mean"][2].get<double>(), 1.0 / 3.0);
+}
+
 } // namespace
 } // namespace raylab::viewer

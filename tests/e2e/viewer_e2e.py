@@ -28,6 +28,7 @@ from e2e_path import (test_bookmarks, test_drop, test_inspect, test_mean_n,  # n
                       test_orbit, test_snapshot, test_split, test_undo)
 from e2e_scene_path import test_scene_path  # noqa: E402
 from e2e_stats import test_idle, test_stats  # noqa: E402
+from e2e_teach import test_difference, test_hover_readout, test_ray_overlay  # noqa: E402
 from e2e_support import (PANEL_BUTTON, Env, Failure, Viewer, check, close,  # noqa: E402
                          distinct_colours, same_pixels, vec)
 
@@ -315,6 +316,9 @@ TESTS = {
     "orbit": (test_orbit, True),
     "bookmarks": (test_bookmarks, True),
     "drop": (test_drop, True),
+    "ray_overlay": (test_ray_overlay, True),
+    "hover_readout": (test_hover_readout, True),
+    "difference": (test_difference, True),
 }
 
 
