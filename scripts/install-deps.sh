@@ -9,6 +9,7 @@ packages=(
     libgtest-dev libgmock-dev libembree-dev
     libglfw3-dev libimgui-dev python3-glad libgl-dev
     xvfb xauth xdotool libgl1-mesa-dri openbox
+    slurm-wlm munge
 )
 
 missing=()
