@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <unistd.h>
 
 namespace raylab {
 namespace {
@@ -187,6 +188,21 @@ bool readPartial(const std::string& path, PartialRender& partial, std::string& e
         if (data.min.x < 0 || data.min.y < 0 || data.max.x >= imageWidth ||
             data.max.y >= imageHeight || data.max.x < data.min.x || data.max.y < data.min.y) {
             return refuse("its pixels lie outside its picture");
+        }
+        // A forged header may claim a picture the file cannot hold: what reading it takes is
+        // checked against the machine's memory before anything is allocated.
+        const double pixelsClaimed = static_cast<double>(data.max.x - data.min.x + 1) *
+                                     static_cast<double>(data.max.y - data.min.y + 1);
+        const double bytesNeeded =
+            pixelsClaimed *
+            static_cast<double>(sizeof(PixelRecord) + sizeof(PixelSum) + sizeof(glm::vec3));
+        const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                              static_cast<double>(sysconf(_SC_PAGESIZE));
+        if (memory > 0.0 && bytesNeeded > 0.5 * memory) {
+            char text[64];
+            std::snprintf(text, sizeof text, "%.1f GiB", bytesNeeded / (1024.0 * 1024 * 1024));
+            return refuse(std::string("reading its pixels needs ") + text +
+                          ", more than half of this machine's memory");
         }
         const bool squares = header.channels().findChannel(squareChannel(0)) != nullptr;
         for (int c = 0; c < 3; ++c) {

@@ -1,0 +1,116 @@
+// Adding up parts of a render (render/film_merge.h): films of sample ranges and windows, rendered
+// apart, merge to the film rendered in one go, bit for bit, for both integrators; parts that do
+// not cover every pixel's samples once are refused with the pixels and samples named.
+
+#include "core/bvh/bvh.h"
+#include "core/cornell_box.h"
+#include "core/render/film_merge.h"
+#include "core/render/renderer.h"
+
+#include <gtest/gtest.h>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+struct RenderedPart {
+    Film film;
+    std::vector<PixelSum> sums;
+};
+
+RenderedPart renderPart(const Scene& scene, const Bvh& bvh, const RenderSettings& s,
+                        FilmWindow window, uint32_t first, uint32_t end) {
+    RenderedPart part;
+    part.film.reset(window, filmLayersFor(s));
+    part.film.startAt(first);
+    for (uint32_t i = first; i < end; ++i) {
+        EXPECT_TRUE(renderPass(scene, bvh, s, part.film));
+    }
+    part.sums.resize(part.film.pixelCount());
+    for (std::size_t i = 0; i < part.sums.size(); ++i) {
+        part.sums[i] = part.film.sumOf(i);
+    }
+    return part;
+}
+
+FilmPart asPart(const RenderedPart& part, const char* name) {
+    return {name,      part.film.window(), part.film.firstSample(), part.film.nextSample(),
+            part.sums, part.film.squares()};
+}
+
+TEST(FilmMerge, RangesAndWindowsMergeToTheWholeRenderBitForBit) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    for (Integrator integrator : {Integrator::Lab, Integrator::Path}) {
+        RenderSettings s;
+        s.width = 37;
+        s.height = 29;
+        s.integrator = integrator;
+        s.light.radius = 0.05f;
+        s.threads = 2;
+        const RenderedPart whole = renderPart(scene, bvh, s, {0, 0, 37, 29}, 0, 5);
+        // Left: samples 0:2 and 2:5; right: one part, over two rows of windows.
+        const RenderedPart parts[] = {
+            renderPart(scene, bvh, s, {0, 0, 20, 29}, 0, 2),
+            renderPart(scene, bvh, s, {0, 0, 20, 29}, 2, 5),
+            renderPart(scene, bvh, s, {20, 0, 37, 11}, 0, 5),
+            renderPart(scene, bvh, s, {20, 11, 37, 29}, 0, 5),
+        };
+        const std::vector<FilmPart> given = {asPart(parts[3], "d"), asPart(parts[1], "b"),
+                                             asPart(parts[0], "a"), asPart(parts[2], "c")};
+        Film merged;
+        ASSERT_EQ(mergeFilmParts(37, 29, given, merged), "");
+        ASSERT_EQ(merged.samples(), 5u);
+        for (std::size_t i = 0; i < merged.pixelCount(); ++i) {
+            ASSERT_EQ(merged.sumOf(i), whole.film.sumOf(i)) << "pixel " << i;
+            ASSERT_EQ(merged.mean(i), whole.film.mean(i));
+        }
+        // The path integrator's films keep noise moments, and so does their merge.
+        EXPECT_EQ(merged.noise().known, integrator == Integrator::Path);
+    }
+}
+
+TEST(FilmMerge, OneSampleMergesKeepTheSamplesFloats) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 16;
+    s.height = 12;
+    const RenderedPart whole = renderPart(scene, bvh, s, {0, 0, 16, 12}, 0, 1);
+    const RenderedPart top = renderPart(scene, bvh, s, {0, 0, 16, 5}, 0, 1);
+    const RenderedPart bottom = renderPart(scene, bvh, s, {0, 5, 16, 12}, 0, 1);
+    const std::vector<FilmPart> given = {asPart(top, "top"), asPart(bottom, "bottom")};
+    Film merged;
+    ASSERT_EQ(mergeFilmParts(16, 12, given, merged), "");
+    for (std::size_t i = 0; i < merged.pixelCount(); ++i) {
+        ASSERT_EQ(merged.mean(i), whole.film.mean(i));
+    }
+}
+
+TEST(FilmMerge, GapsAndOverlapsAreNamed) {
+    const Scene scene = makeCornellBox();
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings s;
+    s.width = 10;
+    s.height = 10;
+    const RenderedPart a = renderPart(scene, bvh, s, {0, 0, 10, 10}, 0, 2);
+    const RenderedPart b = renderPart(scene, bvh, s, {0, 0, 10, 10}, 3, 4);
+    const RenderedPart c = renderPart(scene, bvh, s, {0, 0, 10, 10}, 1, 3);
+    const RenderedPart corner = renderPart(scene, bvh, s, {0, 0, 4, 4}, 2, 4);
+    Film merged;
+    EXPECT_EQ(mergeFilmParts(10, 10, std::vector<FilmPart>{asPart(a, "a"), asPart(b, "b")}, merged),
+              "samples 2:3 of pixels 0,0 to 10,10 are missing");
+    EXPECT_EQ(mergeFilmParts(10, 10, std::vector<FilmPart>{asPart(a, "a"), asPart(c, "c")}, merged),
+              "samples 1:2 of pixels 0,0 to 10,10 are in two parts (c and another)");
+    EXPECT_EQ(
+        mergeFilmParts(10, 10, std::vector<FilmPart>{asPart(a, "a"), asPart(corner, "k")}, merged),
+        "samples 2:4 of pixels 4,0 to 10,4 are missing");
+    EXPECT_EQ(mergeFilmParts(12, 10, std::vector<FilmPart>{asPart(a, "a")}, merged),
+              "samples 0:2 of pixels 10,0 to 12,10 are missing");
+    EXPECT_EQ(mergeFilmParts(8, 10, std::vector<FilmPart>{asPart(a, "a")}, merged),
+              "a: its window or range does not fit the picture");
+    EXPECT_EQ(mergeFilmParts(10, 10, std::vector<FilmPart>{}, merged), "no parts to merge");
+}
+
+} // namespace
+} // namespace raylab
