@@ -3,6 +3,7 @@
 // We write "-1.0" (little-endian, no scaling) and read either byte order and "Pf" (grey) too.
 
 #include "io/atomic_file.h"
+#include "io/file_checks.h"
 #include "io/image_io.h"
 
 #include <bit>
@@ -78,6 +79,13 @@ bool writePfm(const std::string& path, const Framebuffer& linear, std::string& e
 }
 
 bool readPfm(const std::string& path, Framebuffer& linear, std::string& error) {
+    // The largest PFM raylab reads: kMaxImageSide squared colour pixels and a header.
+    constexpr std::uintmax_t kMaxPfmBytes =
+        static_cast<std::uintmax_t>(kMaxImageSide) * kMaxImageSide * 3 * sizeof(float) + 4096;
+    std::uintmax_t size = 0;
+    if (!checkRegularFile(path, "image", kMaxPfmBytes, size, error)) {
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error = "cannot open '" + path + "': " + std::strerror(errno);

@@ -1,6 +1,7 @@
 #include "io/settings_json.h"
 
 #include "io/atomic_file.h"
+#include "io/file_checks.h"
 
 #include <charconv>
 #include <cmath>
@@ -413,7 +414,15 @@ private:
     bool startedValid_;
 };
 
+// Settings files are small; anything larger (or a device such as /dev/zero that never ends) is
+// refused instead of read.
+constexpr std::size_t kMaxSettingsBytes = 16u << 20;
+
 bool readTextFile(const std::string& path, std::string& text, std::string& error) {
+    std::uintmax_t size = 0;
+    if (!checkRegularFile(path, "settings", kMaxSettingsBytes, size, error)) {
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error = "cannot open settings '" + path + "': " + std::strerror(errno);

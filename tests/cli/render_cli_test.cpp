@@ -264,6 +264,21 @@ TEST_F(RenderCli, ABadReferenceFailsBeforeRendering) {
                   {"cut.pfm", "small.pfm"});
 }
 
+TEST_F(RenderCli, FilesThatAreNotRegularFilesAreRefusedNotReadForever) {
+    // /dev/zero never ends; a folder is not a file. Both are refused at once, by name.
+    const std::string out = path("out.png");
+    fs::create_directory(path("folder.json"));
+    for (const std::string flag : {"--settings", "--frames-from"}) {
+        expectFailure({flag, "/dev/zero", "-o", out}, flag == "--settings" ? 1 : 2,
+                      "'/dev/zero' is not a regular file", {"folder.json"});
+        expectFailure({flag, path("folder.json"), "-o", out}, flag == "--settings" ? 1 : 2,
+                      "is not a regular file", {"folder.json"});
+    }
+    fs::create_symlink("/dev/zero", path("zero.pfm"));
+    expectFailure({"--reference", path("zero.pfm"), "-o", out}, 1, "is not a regular file",
+                  {"folder.json", "zero.pfm"});
+}
+
 TEST_F(RenderCli, ReferencePrintsTheErrorAtEachPowerOfTwo) {
     const std::vector<std::string> scene = {"--integrator", "path", "--width",   "24",
                                             "--height",     "24",   "--threads", "2"};
