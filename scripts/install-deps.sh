@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake pkg-config git clang-format
+    build-essential cmake pkg-config git clang-format clang libclang-rt-14-dev
     libglm-dev libassimp-dev libpng-dev nlohmann-json3-dev libopenexr-dev
     libgtest-dev libgmock-dev libembree-dev
     libglfw3-dev libimgui-dev python3-glad libgl-dev

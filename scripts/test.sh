@@ -2,8 +2,9 @@
 # Installs what is missing, builds in Release with warnings as errors, and runs every test with
 # ctest: unit tests, the command-line tests and the viewer's end-to-end tests in a real window
 # under Xvfb. Then builds the same tests (without the viewer, whose GL driver is not
-# instrumented) with ThreadSanitizer and runs them again.
-# RAYLAB_SKIP_TSAN=1 skips the second pass.
+# instrumented) with ThreadSanitizer and runs them again. Then fuzzes every input surface for a
+# time budget (scripts/fuzz.sh; RAYLAB_FUZZ_SECONDS per target, default 45).
+# RAYLAB_SKIP_TSAN=1 skips the second pass, RAYLAB_SKIP_FUZZ=1 the fuzzing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -17,4 +18,8 @@ if [ "${RAYLAB_SKIP_TSAN:-0}" != 1 ]; then
     cmake --preset tsan >/dev/null
     cmake --build --preset tsan -j"$jobs"
     ctest --preset tsan -j"$jobs"
+fi
+
+if [ "${RAYLAB_SKIP_FUZZ:-0}" != 1 ]; then
+    bash scripts/fuzz.sh "${RAYLAB_FUZZ_SECONDS:-45}"
 fi

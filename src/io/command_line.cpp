@@ -516,6 +516,7 @@ const char* programName(Program program) {
 
 int parseCommandLine(int argc, const char* const* argv, Program program, CommandLine& out,
                      std::string& error) {
+    const SingleLineOnExit oneLine(error);
     CommandLine result;
     std::vector<std::string> args;
     for (int i = 1; i < argc; ++i) {

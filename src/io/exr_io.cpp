@@ -2,7 +2,9 @@
 // Framebuffer (missing channels read as 0).
 
 #include "io/atomic_file.h"
+#include "io/exr_header_check.h"
 #include "io/image_io.h"
+#include "io/text_util.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -64,6 +66,10 @@ bool writeExr(const std::string& path, const Framebuffer& linear, std::string& e
 }
 
 bool readExr(const std::string& path, Framebuffer& linear, std::string& error) {
+    const SingleLineOnExit oneLine(error);
+    if (!checkExrHeader(path, error)) {
+        return false;
+    }
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();

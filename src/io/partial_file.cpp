@@ -3,6 +3,8 @@
 #include "core/cornell_box.h"
 #include "core/render_settings.h"
 #include "io/atomic_file.h"
+#include "io/exr_header_check.h"
+#include "io/text_util.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -11,6 +13,7 @@
 #include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -150,6 +153,10 @@ bool writePartial(const std::string& path, const PartialRender& partial, std::st
 }
 
 bool readPartial(const std::string& path, PartialRender& partial, std::string& error) {
+    const SingleLineOnExit oneLine(error);
+    if (!checkExrHeader(path, error)) {
+        return false;
+    }
     const auto refuse = [&](const std::string& why) {
         error = "'" + path + "': " + why;
         return false;
@@ -222,26 +229,32 @@ bool readPartial(const std::string& path, PartialRender& partial, std::string& e
         result.settingsJson = *settings;
         result.scene = *scene;
         result.sceneHash = *sceneHash;
-        const std::size_t pixels =
-            static_cast<std::size_t>(result.window.width()) * result.window.height();
-        std::vector<PixelRecord> records(pixels);
-        Imf::FrameBuffer slices;
-        insertSlices(slices, records, data, result.window.width(), squares);
-        file.setFrameBuffer(slices);
-        file.readPixels(data.min.y, data.max.y);
-        result.sums.resize(pixels);
-        if (squares) {
-            result.squares.resize(pixels);
-        }
-        for (std::size_t i = 0; i < pixels; ++i) {
-            for (int c = 0; c < 3; ++c) {
-                FixedSumBits bits = 0;
-                for (int k = 0; k < kWords; ++k) {
-                    bits |= static_cast<FixedSumBits>(records[i].words[c][k]) << (32 * k);
+        // Rows are read a block at a time and kept as they arrive, so that a file which claims
+        // more rows than it holds fails before memory for all of them is taken.
+        constexpr int kRowsPerBlock = 16;
+        const int width = result.window.width();
+        std::vector<PixelRecord> records(static_cast<std::size_t>(width) * kRowsPerBlock);
+        for (int y0 = data.min.y; y0 <= data.max.y; y0 += kRowsPerBlock) {
+            const int y1 = std::min(y0 + kRowsPerBlock - 1, data.max.y);
+            const Imath::Box2i block(Imath::V2i(data.min.x, y0), Imath::V2i(data.max.x, y1));
+            Imf::FrameBuffer slices;
+            insertSlices(slices, records, block, width, squares);
+            file.setFrameBuffer(slices);
+            file.readPixels(y0, y1);
+            const std::size_t count = static_cast<std::size_t>(width) * (y1 - y0 + 1);
+            for (std::size_t i = 0; i < count; ++i) {
+                PixelSum sum;
+                for (int c = 0; c < 3; ++c) {
+                    FixedSumBits bits = 0;
+                    for (int k = 0; k < kWords; ++k) {
+                        bits |= static_cast<FixedSumBits>(records[i].words[c][k]) << (32 * k);
+                    }
+                    sum.channel[c] = static_cast<FixedSum>(bits);
                 }
-                result.sums[i].channel[c] = static_cast<FixedSum>(bits);
+                result.sums.push_back(sum);
                 if (squares) {
-                    result.squares[i][c] = records[i].square[c];
+                    result.squares.emplace_back(records[i].square[0], records[i].square[1],
+                                                records[i].square[2]);
                 }
             }
         }

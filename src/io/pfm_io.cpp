@@ -5,6 +5,7 @@
 #include "io/atomic_file.h"
 #include "io/file_checks.h"
 #include "io/image_io.h"
+#include "io/text_util.h"
 
 #include <bit>
 #include <charconv>
@@ -79,6 +80,7 @@ bool writePfm(const std::string& path, const Framebuffer& linear, std::string& e
 }
 
 bool readPfm(const std::string& path, Framebuffer& linear, std::string& error) {
+    const SingleLineOnExit oneLine(error);
     // The largest PFM raylab reads: kMaxImageSide squared colour pixels and a header.
     constexpr std::uintmax_t kMaxPfmBytes =
         static_cast<std::uintmax_t>(kMaxImageSide) * kMaxImageSide * 3 * sizeof(float) + 4096;

@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.h"
 #include "io/file_checks.h"
+#include "io/text_util.h"
 
 #include <charconv>
 #include <cmath>
@@ -500,6 +501,7 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
 
 bool settingsFromJson(const std::string& text, RenderSettings& settings, SettingsJsonExtras& extras,
                       std::string& error) {
+    const SingleLineOnExit oneLine(error);
     Json root;
     try {
         root = Json::parse(text);
@@ -539,6 +541,7 @@ bool settingsFromJson(const std::string& text, RenderSettings& settings, std::st
 
 bool loadSettingsFile(const std::string& path, RenderSettings& settings, SettingsJsonExtras& extras,
                       std::string& error) {
+    const SingleLineOnExit oneLine(error);
     std::string text;
     if (!readTextFile(path, text, error)) {
         return false;

@@ -31,4 +31,42 @@ inline std::string lowerCase(std::string text) {
     return text;
 }
 
+// `text` made fit for one line of a message: line breaks, tabs and other control characters (a
+// file's contents, a key or an option the user typed) become \n, \t or \xNN.
+inline std::string singleLine(std::string_view text) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (u < 0x20 || u == 0x7f) {
+            out += "\\x";
+            out += kHex[u >> 4];
+            out += kHex[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+// Makes `error` singleLine() when the scope ends: the first statement of a function whose every
+// error, whatever text it quotes, must be one line.
+class SingleLineOnExit {
+public:
+    explicit SingleLineOnExit(std::string& error) : error_(error) {}
+    ~SingleLineOnExit() { error_ = singleLine(error_); }
+    SingleLineOnExit(const SingleLineOnExit&) = delete;
+    SingleLineOnExit& operator=(const SingleLineOnExit&) = delete;
+
+private:
+    std::string& error_;
+};
+
 } // namespace raylab

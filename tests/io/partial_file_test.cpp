@@ -84,6 +84,16 @@ TEST_F(PartialFile, AHeaderClaimingAHugePictureIsRefusedBeforeItsPixelsAreRead) 
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
+TEST_F(PartialFile, AnAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
+    // OpenEXR would take the 2 GiB this attribute claims before finding the file too short.
+    const std::string forged =
+        std::string(RAYLAB_SOURCE_DIR) + "/tests/fuzz/corpus/partial_file/huge_attribute";
+    PartialRender back;
+    std::string error;
+    EXPECT_FALSE(readPartial(forged, back, error));
+    EXPECT_NE(error.find("an attribute of 2147483632 bytes"), std::string::npos) << error;
+}
+
 TEST_F(PartialFile, OtherFilesAreRefusedByName) {
     PartialRender back;
     std::string error;
