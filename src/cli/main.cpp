@@ -14,6 +14,7 @@
 #include "io/inspection_json.h"
 #include "io/mesh_loader.h"
 #include "io/partial_file.h"
+#include "io/render_report.h"
 #include "io/settings_json.h"
 #include "io/text_util.h"
 
@@ -254,10 +255,7 @@ int run(int argc, char** argv) {
     const std::string presetText = cl.preset ? ", preset " + std::string(cl.preset->name) + " (" +
                                                    std::string(cl.preset->equation) + ")"
                                              : std::string();
-    std::string noiseText;
-    if (const raylab::NoiseEstimate noise = film.noise(); noise.known) {
-        noiseText = ", noise " + std::to_string(100.0 * noise.relativeError).substr(0, 5) + "%";
-    }
+    const std::string noiseText = raylab::noiseSuffix(film.noise());
     const std::string samplesText = film.firstSample() == 0
                                         ? std::to_string(film.samples()) + " spp"
                                         : "samples " + std::to_string(film.firstSample()) + ":" +

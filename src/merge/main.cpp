@@ -9,6 +9,7 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/partial_file.h"
+#include "io/render_report.h"
 #include "io/settings_json.h"
 
 #include <cstdio>
@@ -133,10 +134,7 @@ int run(int argc, char** argv) {
                             {{"Software", "raylab-merge"}, {"raylab settings", json}})) {
         return fail(1, error);
     }
-    std::string noiseText;
-    if (const raylab::NoiseEstimate noise = film.noise(); noise.known) {
-        noiseText = ", noise " + std::to_string(100.0 * noise.relativeError).substr(0, 5) + "%";
-    }
+    const std::string noiseText = raylab::noiseSuffix(film.noise());
     std::fprintf(stderr, "%s: %zu parts, %dx%d, %u spp%s -> %s\n", kProgram, parts.size(),
                  film.width(), film.height(), film.samples(), noiseText.c_str(), output.c_str());
     return 0;

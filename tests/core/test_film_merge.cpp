@@ -33,31 +33,43 @@ RenderedPart renderPart(const Scene& scene, const Bvh& bvh, const RenderSettings
     return part;
 }
 
+// The lab's box and its BVH, shared by the tests; settings of the given size.
+class FilmMerge : public ::testing::Test {
+protected:
+    static RenderSettings sized(int width, int height) {
+        RenderSettings s;
+        s.width = width;
+        s.height = height;
+        return s;
+    }
+    RenderedPart part(const RenderSettings& s, FilmWindow window, uint32_t first, uint32_t end) {
+        return renderPart(scene_, bvh_, s, window, first, end);
+    }
+    Scene scene_ = makeCornellBox();
+    Bvh bvh_ = buildBvh(scene_);
+};
+
 FilmPart asPart(const RenderedPart& part, const char* name) {
     return {name,      part.film.window(), part.film.firstSample(), part.film.nextSample(),
             part.sums, part.film.squares()};
 }
 
-TEST(FilmMerge, RangesAndWindowsMergeToTheWholeRenderBitForBit) {
-    const Scene scene = makeCornellBox();
-    const Bvh bvh = buildBvh(scene);
+TEST_F(FilmMerge, RangesAndWindowsMergeToTheWholeRenderBitForBit) {
     for (Integrator integrator : {Integrator::Lab, Integrator::Path}) {
-        RenderSettings s;
-        s.width = 37;
-        s.height = 29;
+        RenderSettings s = sized(37, 29);
         s.integrator = integrator;
         s.light.radius = 0.05f;
         s.threads = 2;
-        const RenderedPart whole = renderPart(scene, bvh, s, {0, 0, 37, 29}, 0, 5);
+        const RenderedPart whole = part(s, {0, 0, 37, 29}, 0, 5);
         // Left: samples 0:2 and 2:5; right: one part, over two rows of windows.
-        const RenderedPart parts[] = {
-            renderPart(scene, bvh, s, {0, 0, 20, 29}, 0, 2),
-            renderPart(scene, bvh, s, {0, 0, 20, 29}, 2, 5),
-            renderPart(scene, bvh, s, {20, 0, 37, 11}, 0, 5),
-            renderPart(scene, bvh, s, {20, 11, 37, 29}, 0, 5),
+        const RenderedPart pieces[] = {
+            part(s, {0, 0, 20, 29}, 0, 2),
+            part(s, {0, 0, 20, 29}, 2, 5),
+            part(s, {20, 0, 37, 11}, 0, 5),
+            part(s, {20, 11, 37, 29}, 0, 5),
         };
-        const std::vector<FilmPart> given = {asPart(parts[3], "d"), asPart(parts[1], "b"),
-                                             asPart(parts[0], "a"), asPart(parts[2], "c")};
+        const std::vector<FilmPart> given = {asPart(pieces[3], "d"), asPart(pieces[1], "b"),
+                                             asPart(pieces[0], "a"), asPart(pieces[2], "c")};
         Film merged;
         ASSERT_EQ(mergeFilmParts(37, 29, given, merged), "");
         ASSERT_EQ(merged.samples(), 5u);
@@ -70,15 +82,11 @@ TEST(FilmMerge, RangesAndWindowsMergeToTheWholeRenderBitForBit) {
     }
 }
 
-TEST(FilmMerge, OneSampleMergesKeepTheSamplesFloats) {
-    const Scene scene = makeCornellBox();
-    const Bvh bvh = buildBvh(scene);
-    RenderSettings s;
-    s.width = 16;
-    s.height = 12;
-    const RenderedPart whole = renderPart(scene, bvh, s, {0, 0, 16, 12}, 0, 1);
-    const RenderedPart top = renderPart(scene, bvh, s, {0, 0, 16, 5}, 0, 1);
-    const RenderedPart bottom = renderPart(scene, bvh, s, {0, 5, 16, 12}, 0, 1);
+TEST_F(FilmMerge, OneSampleMergesKeepTheSamplesFloats) {
+    const RenderSettings s = sized(16, 12);
+    const RenderedPart whole = part(s, {0, 0, 16, 12}, 0, 1);
+    const RenderedPart top = part(s, {0, 0, 16, 5}, 0, 1);
+    const RenderedPart bottom = part(s, {0, 5, 16, 12}, 0, 1);
     const std::vector<FilmPart> given = {asPart(top, "top"), asPart(bottom, "bottom")};
     Film merged;
     ASSERT_EQ(mergeFilmParts(16, 12, given, merged), "");
@@ -87,16 +95,12 @@ TEST(FilmMerge, OneSampleMergesKeepTheSamplesFloats) {
     }
 }
 
-TEST(FilmMerge, GapsAndOverlapsAreNamed) {
-    const Scene scene = makeCornellBox();
-    const Bvh bvh = buildBvh(scene);
-    RenderSettings s;
-    s.width = 10;
-    s.height = 10;
-    const RenderedPart a = renderPart(scene, bvh, s, {0, 0, 10, 10}, 0, 2);
-    const RenderedPart b = renderPart(scene, bvh, s, {0, 0, 10, 10}, 3, 4);
-    const RenderedPart c = renderPart(scene, bvh, s, {0, 0, 10, 10}, 1, 3);
-    const RenderedPart corner = renderPart(scene, bvh, s, {0, 0, 4, 4}, 2, 4);
+TEST_F(FilmMerge, GapsAndOverlapsAreNamed) {
+    const RenderSettings s = sized(10, 10);
+    const RenderedPart a = part(s, {0, 0, 10, 10}, 0, 2);
+    const RenderedPart b = part(s, {0, 0, 10, 10}, 3, 4);
+    const RenderedPart c = part(s, {0, 0, 10, 10}, 1, 3);
+    const RenderedPart corner = part(s, {0, 0, 4, 4}, 2, 4);
     Film merged;
     EXPECT_EQ(mergeFilmParts(10, 10, std::vector<FilmPart>{asPart(a, "a"), asPart(b, "b")}, merged),
               "samples 2:3 of pixels 0,0 to 10,10 are missing");
