@@ -151,7 +151,14 @@ bool sameSamples(const RenderSettings& a, const RenderSettings& b) {
     return x == b;
 }
 
-const char* toString(DisplayMode mode) { return mode == DisplayMode::Lab ? "lab" : "srgb"; }
+const char* toString(DisplayMode mode) {
+    switch (mode) {
+    case DisplayMode::Lab: return "lab";
+    case DisplayMode::Srgb: return "srgb";
+    case DisplayMode::FalseColour: return "false-colour";
+    }
+    return "lab";
+}
 
 bool parseDisplayMode(const std::string& text, DisplayMode& mode) {
     if (text == "lab") {
@@ -160,6 +167,10 @@ bool parseDisplayMode(const std::string& text, DisplayMode& mode) {
     }
     if (text == "srgb") {
         mode = DisplayMode::Srgb;
+        return true;
+    }
+    if (text == "false-colour" || text == "false-color") {
+        mode = DisplayMode::FalseColour;
         return true;
     }
     return false;

@@ -12,8 +12,10 @@
 namespace raylab {
 
 enum class DisplayMode {
-    Lab,  // the lab's display: clamp(R, 0, 1) * 255, no gamma
-    Srgb, // R * 2^exposure, then the sRGB transfer curve
+    Lab,         // the lab's display: clamp(R, 0, 1) * 255, no gamma
+    Srgb,        // R * 2^exposure, then the sRGB transfer curve
+    FalseColour, // the largest channel on a logarithmic colour scale about 2^exposure
+                 // (render/false_colour.h)
 };
 
 // Which light transport makes the picture (DESIGN.md section 5).
@@ -69,7 +71,7 @@ struct RenderSettings {
     int threads = 0;         // 0 = every hardware thread
 
     DisplayMode display = DisplayMode::Lab;
-    float exposure = 0.0f; // stops, for DisplayMode::Srgb
+    float exposure = 0.0f; // stops, for DisplayMode::Srgb and FalseColour
 
     Integrator integrator = Integrator::Lab;
     // The path integrator's indirect bounces (0 = direct light only), with Russian roulette from

@@ -291,14 +291,17 @@ const std::vector<Option>& options() {
          }},
         {"--threads", "N", kAll, "render threads, 0 = all cores (default 0)",
          settingsIntIn(0, kMaxThreads, &RenderSettings::threads)},
-        {"--display", "lab|srgb", kAll, "display transform for 8-bit output (default lab)",
+        {"--display", "lab|srgb|false-colour", kAll,
+         "display transform for 8-bit output: the lab's clamp, sRGB, or a logarithmic false-colour "
+         "scale of 16 stops about 2^exposure (default lab)",
          [](const std::string& v, ParseState& s) -> std::string {
              if (!parseDisplayMode(lowerCase(v), s.out.settings.display)) {
-                 return expected("lab or srgb", v);
+                 return expected("lab, srgb or false-colour", v);
              }
              return {};
          }},
-        {"--exposure", "EV", kAll, "exposure in stops for --display srgb (default 0)",
+        {"--exposure", "EV", kAll,
+         "exposure in stops for --display srgb, the middle of the false-colour scale (default 0)",
          [](const std::string& v, ParseState& s) -> std::string {
              if (!parseFloat(v, s.out.settings.exposure)) {
                  return expected("a finite number of stops", v);

@@ -2,15 +2,19 @@
 
 #include "core/camera.h"
 #include "core/lab_presets.h"
+#include "core/render/false_colour.h"
 #include "render_worker.h"
 #include "settings_edit.h"
 #include "split_view.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#include <iterator>
+#include <string>
 #include <thread>
 
 namespace raylab::viewer {
@@ -201,23 +205,51 @@ void cameraSection(RenderSettings& edit, const PanelView& view, PanelActions& ac
     }
 }
 
+// The false-colour scale as a row of swatches, each labelled with the value (W/m^2) where its
+// colour starts: every 2 stops from the dark end to the bright end.
+void falseColourLegend(float exposure) {
+    constexpr int kSwatches = 9;
+    const float width = ImGui::GetContentRegionAvail().x / static_cast<float>(kSwatches);
+    for (int i = 0; i < kSwatches; ++i) {
+        const float t = static_cast<float>(i) / static_cast<float>(kSwatches - 1);
+        const std::array<uint8_t, 3> c = falseColourAt(t);
+        if (i > 0) {
+            ImGui::SameLine(0.0f, 0.0f);
+        }
+        ImGui::ColorButton(("##fc" + std::to_string(i)).c_str(),
+                           ImVec4(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 1.0f),
+                           ImGuiColorEditFlags_NoTooltip, ImVec2(width, ImGui::GetFrameHeight()));
+    }
+    ImGui::Text("%.3g", static_cast<double>(falseColourValue(0.0f, exposure)));
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.45f);
+    ImGui::Text("%.3g", static_cast<double>(falseColourValue(0.5f, exposure)));
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.85f);
+    ImGui::Text("%.3g W/m2", static_cast<double>(falseColourValue(1.0f, exposure)));
+}
+
 void displaySection(RenderSettings& edit, PanelState& state) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
         return;
     }
     const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
     const float half = halfWidth();
-    int mode = edit.display == DisplayMode::Lab ? 0 : 1;
+    constexpr DisplayMode kModes[] = {DisplayMode::Lab, DisplayMode::Srgb,
+                                      DisplayMode::FalseColour};
+    int mode = static_cast<int>(std::find(std::begin(kModes), std::end(kModes), edit.display) -
+                                std::begin(kModes));
     ImGui::SetNextItemWidth(half);
-    if (ImGui::Combo("##display", &mode, "lab clamp\0sRGB\0")) {
-        edit.display = mode == 0 ? DisplayMode::Lab : DisplayMode::Srgb;
+    if (ImGui::Combo("##display", &mode, "lab clamp\0sRGB\0false colour\0")) {
+        edit.display = kModes[mode];
     }
     ImGui::SameLine(0.0f, inner);
-    ImGui::BeginDisabled(edit.display != DisplayMode::Srgb);
+    ImGui::BeginDisabled(edit.display == DisplayMode::Lab);
     ImGui::SetNextItemWidth(half);
     ImGui::SliderFloat("display, EV", &edit.exposure, -10.0f, 10.0f, "%.2f EV",
                        ImGuiSliderFlags_AlwaysClamp);
     ImGui::EndDisabled();
+    if (edit.display == DisplayMode::FalseColour) {
+        falseColourLegend(edit.exposure);
+    }
     ImGui::SliderFloat("resolution", &state.resolutionScale, 0.1f, 1.0f, "x %.2f",
                        ImGuiSliderFlags_AlwaysClamp);
     ImGui::SetNextItemWidth(half);

@@ -4,6 +4,7 @@
 #include "core/bvh/bvh.h"
 #include "core/cornell_box.h"
 #include "core/integrators/pixel_inspection.h"
+#include "core/render/false_colour.h"
 #include "core/render/image_error.h"
 #include "core/render/renderer.h"
 #include "io/image_io.h"
@@ -485,6 +486,44 @@ TEST_F(RenderCli, ViewsWriteTheirRawNumbersToPfm) {
     }
     EXPECT_GT(brightest, 1.0f); // raw D, not clamped for display
     expectFailure({"--view", "heat", "-o", path("x.png")}, 2, "--view", {"d.pfm"});
+}
+
+} // namespace
+} // namespace raylab
+
+namespace raylab {
+namespace {
+
+TEST_F(RenderCli, FalseColourPngsColourTheLinearPicturesValues) {
+    const std::vector<std::string> flags = {"--width",       "40",  "--height",  "30",
+                                            "--light-power", "400", "--display", "false-colour",
+                                            "--exposure",    "1"};
+    std::vector<std::string> png = flags;
+    png.insert(png.end(), {"-o", path("f.png"), "--save-settings", path("f.json")});
+    ASSERT_EQ(run(png).exitCode, 0);
+    std::vector<std::string> pfm = flags;
+    pfm.insert(pfm.end(), {"-o", path("f.pfm")});
+    ASSERT_EQ(run(pfm).exitCode, 0);
+    Rgba8Image picture;
+    Framebuffer linear;
+    std::string error;
+    ASSERT_TRUE(readPng(path("f.png"), picture, error)) << error;
+    ASSERT_TRUE(readPfm(path("f.pfm"), linear, error)) << error;
+    int distinct = 0;
+    std::array<uint8_t, 3> previous{};
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            const std::array<uint8_t, 3> expected = falseColour(linear.at(x, y), 1.0f);
+            const uint8_t* got = &picture.pixels[4 * static_cast<std::size_t>(y * 40 + x)];
+            ASSERT_EQ(got[0], expected[0]) << x << ", " << y;
+            ASSERT_EQ(got[1], expected[1]) << x << ", " << y;
+            ASSERT_EQ(got[2], expected[2]) << x << ", " << y;
+            distinct += expected != previous;
+            previous = expected;
+        }
+    }
+    EXPECT_GT(distinct, 100); // a scale of colours, not one flat colour
+    EXPECT_NE(slurp(path("f.json")).find("\"false-colour\""), std::string::npos);
 }
 
 } // namespace

@@ -93,10 +93,9 @@ PixelInspection inspectPixel(const Scene& scene, const Bvh& bvh, const EmitterTa
         out.indirect = sample.indirect;
         out.radiance = sample.radiance;
     }
-    for (int c = 0; c < 3; ++c) {
-        out.display[static_cast<std::size_t>(c)] =
-            displayChannel(out.radiance[c], settings.display, settings.exposure);
-    }
+    const std::array<uint8_t, 3> shown =
+        displayPixel(out.radiance, settings.display, settings.exposure);
+    std::copy(shown.begin(), shown.end(), out.display.begin());
     return out;
 }
 

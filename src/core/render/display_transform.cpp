@@ -1,6 +1,7 @@
 #include "render/display_transform.h"
 
 #include "bvh/bvh.h"
+#include "render/false_colour.h"
 #include "render/srgb_quantizer.h"
 #include "watertight_avx2.h"
 
@@ -103,7 +104,16 @@ uint8_t displayChannel(float value, DisplayMode mode, float exposure) {
     if (mode == DisplayMode::Lab) {
         return quantize(value);
     }
+    if (mode == DisplayMode::FalseColour) {
+        return falseColour(glm::vec3(value), exposure)[0];
+    }
     return srgbQuantizer()(value * std::exp2(exposure));
+}
+
+std::array<uint8_t, 3> displayPixel(const glm::vec3& value, DisplayMode mode, float exposure) {
+    uint8_t rgba[4];
+    toRgba8Scalar(std::span<const glm::vec3>(&value, 1), 1.0f, mode, exposure, rgba);
+    return {rgba[0], rgba[1], rgba[2]};
 }
 
 void toRgba8Scalar(std::span<const glm::vec3> linear, float scale, DisplayMode mode, float exposure,
@@ -120,6 +130,11 @@ void toRgba8Scalar(std::span<const glm::vec3> linear, float scale, DisplayMode m
             out[red] = quantize(c.x);
             out[1] = quantize(c.y);
             out[blue] = quantize(c.z);
+        } else if (mode == DisplayMode::FalseColour) {
+            const std::array<uint8_t, 3> colour = falseColour(c, exposure);
+            out[red] = colour[0];
+            out[1] = colour[1];
+            out[blue] = colour[2];
         } else {
             out[red] = srgb(c.x * gain);
             out[1] = srgb(c.y * gain);
@@ -133,7 +148,10 @@ void toRgba8(std::span<const glm::vec3> linear, float scale, DisplayMode mode, f
              std::span<uint8_t> rgba, PixelOrder order) {
     assert(rgba.size() >= 4 * linear.size());
     static const bool simd = bvhSimdSupported();
-    const std::size_t done = simd ? toRgba8Avx2(linear, scale, mode, exposure, rgba, order) : 0;
+    // False colour is a view for reading values, not a hot path: it stays scalar.
+    const std::size_t done = simd && mode != DisplayMode::FalseColour
+                                 ? toRgba8Avx2(linear, scale, mode, exposure, rgba, order)
+                                 : 0;
     if (done < linear.size()) {
         toRgba8Scalar(linear.subspan(done), scale, mode, exposure, rgba.subspan(4 * done), order);
     }

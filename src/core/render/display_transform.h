@@ -4,6 +4,7 @@
 #include "render/framebuffer.h"
 #include "render_settings.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <span>
@@ -12,8 +13,12 @@
 namespace raylab {
 
 // One channel to 8 bits. Lab: round(clamp(value, 0, 1) * 255). sRGB: value * 2^exposure through
-// the sRGB transfer curve, then the same rounding. NaN maps to 0.
+// the sRGB transfer curve, then the same rounding. NaN maps to 0. (False colour colours a pixel,
+// not a channel: for it this is the red byte of a grey pixel of that value; use displayPixel.)
 uint8_t displayChannel(float value, DisplayMode mode, float exposure);
+
+// One pixel's three display bytes in any mode: what toRgba8 writes for it.
+std::array<uint8_t, 3> displayPixel(const glm::vec3& value, DisplayMode mode, float exposure);
 
 // The order of a display pixel's four bytes: R, G, B, A (image files) or B, G, R, A (the order
 // window systems and OpenGL drivers keep, so an upload in it is a plain copy: the viewer's).
