@@ -120,8 +120,8 @@ TEST(ObserverGeometry, TheObserverStartsSeeingTheLabCameraItsFrustumAndTheScene)
                                                      kHeight, imagePlaneDistance(lab, bounds))) {
         EXPECT_TRUE(inView(observer, corner));
     }
-    const std::vector<ImageSegment> drawn = observerOverlay(
-        observer, kWidth, kHeight, lab, kWidth, kHeight, PointLight(), bounds, 1e-3f);
+    const std::vector<ImageSegment> drawn = observerOverlay(observer, kWidth, kHeight, lab, kWidth,
+                                                            kHeight, PointLight(), bounds, 1e-3f);
     EXPECT_EQ(drawn.size(), 11u + 3u); // nothing of the lab camera or light clipped
 }
 
