@@ -6,6 +6,25 @@
 
 namespace raylab::viewer {
 
+namespace {
+
+RenderSettings withCamera(RenderSettings settings, const std::optional<Camera>& camera) {
+    if (camera) {
+        settings.camera = *camera;
+    }
+    return settings;
+}
+
+} // namespace
+
+ObserverView::ObserverView(const RenderSettings& initial, const std::optional<Camera>& observedLab)
+    : on_(observedLab.has_value()), kept_(observedLab),
+      labHistory_(withCamera(initial, observedLab)) {
+    if (on_) {
+        observerHistory_.emplace(initial);
+    }
+}
+
 void ObserverView::toggle(RenderSettings& settings, const Aabb& bounds) {
     if (!on_ && !kept_) {
         kept_ = observerStart(settings.camera, bounds);
@@ -19,9 +38,7 @@ void ObserverView::toggle(RenderSettings& settings, const Aabb& bounds) {
 }
 
 void ObserverView::observe(const Camera& lab, const Camera& observer, RenderSettings& settings) {
-    RenderSettings labSettings = settings;
-    labSettings.camera = lab;
-    labHistory_.adopt(labSettings);
+    labHistory_.adopt(withCamera(settings, lab));
     on_ = true;
     kept_ = lab;
     settings.camera = observer;

@@ -15,7 +15,11 @@ namespace raylab::viewer {
 
 class ObserverView {
 public:
-    explicit ObserverView(const RenderSettings& initial) : labHistory_(initial) {}
+    // `initial`: the settings shown at first. With `observedLab` (a settings file of the observer
+    // view, SettingsFileExtras::observedLabCamera) the view starts on, initial's camera being the
+    // observer's and `observedLab` the lab camera kept.
+    explicit ObserverView(const RenderSettings& initial,
+                          const std::optional<Camera>& observedLab = std::nullopt);
 
     bool on() const { return on_; }
 

@@ -292,7 +292,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     bool showKeys = false; // the list of keys and mouse gestures (H)
     // The observer view (O) and the undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y) of the camera
     // being moved.
-    ObserverView observer(panel.settings);
+    ObserverView observer(panel.settings, command.observedLabCamera);
     OrbitControls orbit;      // right drag orbits, middle drag pans
     PictureReadouts readouts; // the pixel under the cursor, a Shift + drag rectangle's mean
     std::string pendingDrop = options.drop;       // --drop FILE, dropped once the window shows

@@ -2,7 +2,8 @@
 from outside. Its screenshot is raylab-render's picture from the observer's camera (the settings
 keep the lab camera); the window draws the lab camera's frustum over it where the observer's
 camera projects it; moving the observer leaves the lab camera as it was, and O again returns to
-the lab camera's picture, byte for byte."""
+the lab camera's picture, byte for byte. The observer's settings file starts a viewer in the
+observer view."""
 
 import json
 import math
@@ -143,3 +144,18 @@ def test_observer(env):
                   f"({x:.1f}, {y:.1f}) but the window has no frustum line there")
             checked += 1
     check(checked >= 12, f"the observer sees only {checked} of the frustum's points")
+
+    # The observer's settings file starts a viewer in the observer view with both cameras; O
+    # then returns to the lab camera it kept.
+    viewer = Viewer(env, ["--settings", env.path("observer.png.json"), "--no-panel"])
+    try:
+        restored_png, restored = viewer.shot_when(at_cap(True), "--settings did not restore it")
+        viewer.xdotool("key", "o")
+        _, lab_again = viewer.shot_when(at_cap(False), "O did not return to the lab camera")
+        viewer.quit()
+    finally:
+        viewer.kill()
+    check(restored["camera"] == seen["camera"] and restored["observer"] == seen["observer"],
+          f"--settings restored {restored['camera']} and {restored['observer']}")
+    same_pixels(restored_png, seen_png, "the restored observer view vs the screenshot")
+    check(lab_again["camera"] == lab["camera"], f"O returned to {lab_again['camera']}")

@@ -236,6 +236,18 @@ TEST(ObserverView, UndoMovesOnlyTheCameraBeingMoved) {
     EXPECT_EQ(settings.camera, lab);
     EXPECT_FALSE(view.history().undo(settings)); // the lab camera never moved
     EXPECT_EQ(settings.camera, lab);
+    // Started from a settings file of the observer view: on, each camera as recorded, and the lab
+    // camera's history starts at the lab camera.
+    RenderSettings fromFile;
+    fromFile.camera.position = {1.0f, 2.0f, -7.0f};
+    ObserverView started(fromFile, lab);
+    EXPECT_TRUE(started.on());
+    EXPECT_EQ(started.keptLabCamera(), lab);
+    started.toggle(fromFile, labBounds());
+    EXPECT_EQ(fromFile.camera, lab);
+    EXPECT_FALSE(started.history().undo(fromFile));
+    started.toggle(fromFile, labBounds());
+    EXPECT_EQ(fromFile.camera.position, glm::vec3(1.0f, 2.0f, -7.0f));
     // A restored screenshot of the observer view: both cameras as recorded.
     Camera elsewhere;
     elsewhere.position = {1.0f, 2.0f, -7.0f};
