@@ -79,27 +79,32 @@ def render_from(env, settings, name):
     return read_png(env.path(name))
 
 
+def at_cap(observer):
+    """Whether a screenshot is of the observer view (or not) with its 2 samples."""
+    return lambda png, s: s["image"]["samples"] == 2 and ("observer" in s) == observer
+
+
+def press_o(viewer, observer, what):
+    """O, then (png, settings) of the switched view's picture at the cap."""
+    viewer.xdotool("key", "o")
+    return viewer.shot_when(at_cap(observer), what)
+
+
 def test_observer(env):
     width, height = 320, 240
     size = ["--width", str(width), "--height", str(height), "--spp", "2"]
     viewer = Viewer(env, size + ["--no-panel", "--readback", "back.png"] + FOREVER)
 
-    def at_cap(observer):
-        return lambda png, s: s["image"]["samples"] == 2 and ("observer" in s) == observer
-
     try:
         lab_png, lab = viewer.shot_when(at_cap(False), "no lab picture at the cap")
         check(same_camera(lab["camera"], LAB_CAMERA), f"not the lab's camera: {lab['camera']}")
-        viewer.xdotool("key", "o")
-        seen_png, seen = viewer.shot_when(at_cap(True), "O did not switch to the observer")
+        seen_png, seen = press_o(viewer, True, "O did not switch to the observer")
         viewer.xdotool("key", "--delay", "80", "Up", "Up")
         moved_png, moved = viewer.shot_when(
             lambda png, s: s["camera"] != seen["camera"] and s["image"]["samples"] == 2,
             "Up did not move the observer")
-        viewer.xdotool("key", "o")
-        back_png, back = viewer.shot_when(at_cap(False), "O did not return to the lab camera")
-        viewer.xdotool("key", "o")
-        again_png, again = viewer.shot_when(at_cap(True), "O did not return to the observer")
+        back_png, back = press_o(viewer, False, "O did not return to the lab camera")
+        again_png, again = press_o(viewer, True, "O did not return to the observer")
         viewer.quit()
     finally:
         viewer.kill()
@@ -150,8 +155,7 @@ def test_observer(env):
     viewer = Viewer(env, ["--settings", env.path("observer.png.json"), "--no-panel"])
     try:
         restored_png, restored = viewer.shot_when(at_cap(True), "--settings did not restore it")
-        viewer.xdotool("key", "o")
-        _, lab_again = viewer.shot_when(at_cap(False), "O did not return to the lab camera")
+        _, lab_again = press_o(viewer, False, "O did not return to the lab camera")
         viewer.quit()
     finally:
         viewer.kill()
