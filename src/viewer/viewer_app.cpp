@@ -564,6 +564,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 frameScene(scene->scene, panel.settings);
             }
             if (actions.resetToLab) {
+                observer.leave(panel.settings); // the lab's defaults are the lab camera's
                 resetToLabDefaults(scene->scene, isLabBox(*scene), panel.settings);
             }
             if (actions.openScene && !loader.start(panel.scenePath)) {
