@@ -1,9 +1,9 @@
 """The observer view in the real window: O switches to a second camera that sees the lab camera
 from outside. Its screenshot is raylab-render's picture from the observer's camera (the settings
 keep the lab camera); the window draws the lab camera's frustum over it where the observer's
-camera projects it; moving the observer leaves the lab camera as it was, and O again returns to
-the lab camera's picture, byte for byte. The observer's settings file starts a viewer in the
-observer view."""
+camera projects it; moving the observer (keys, a bookmark) leaves the lab camera as it was, and O
+again returns to the lab camera's picture, byte for byte. The observer's settings file starts a
+viewer in the observer view."""
 
 import json
 import math
@@ -103,6 +103,11 @@ def test_observer(env):
         moved_png, moved = viewer.shot_when(
             lambda png, s: s["camera"] != seen["camera"] and s["image"]["samples"] == 2,
             "Up did not move the observer")
+        # A bookmark in the observer view keeps and restores the observer's camera.
+        viewer.xdotool("key", "--delay", "80", "ctrl+1", "Up")
+        viewer.shot_when(lambda png, s: s["camera"] != moved["camera"],
+                         "Up did not move the observer again")
+        _, marked = viewer.key_shot("1")
         back_png, back = press_o(viewer, False, "O did not return to the lab camera")
         again_png, again = press_o(viewer, True, "O did not return to the observer")
         viewer.quit()
@@ -127,6 +132,9 @@ def test_observer(env):
           f"moving the observer changed the lab camera to {moved['observer']['lab_camera']}")
     check(moved["camera"]["position"][2] > seen["camera"]["position"][2],
           "Up did not move the observer forward")
+    check(marked["camera"] == moved["camera"] and marked["bookmarks"][0] == moved["camera"],
+          f"1 returned the observer to {marked['camera']}, not its bookmark {moved['camera']}")
+    check(marked["observer"]["lab_camera"] == lab["camera"], "the bookmark moved the lab camera")
     check(back["camera"] == lab["camera"], f"O returned to {back['camera']}, not the lab camera")
     same_pixels(back_png, lab_png, "the lab camera's picture after the observer view vs before")
     check(again["camera"] == moved["camera"], "the observer did not come back where it was left")
