@@ -600,6 +600,7 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         }
         markGivenFromKeys(extras, result.given);
         result.bookmarks = extras.bookmarks;
+        result.observedLabCamera = extras.observedLabCamera;
         result.frameCameras = extras.frames;
         if (!sceneGiven && !extras.scene.empty()) {
             result.scene = extras.scene;

@@ -56,6 +56,9 @@ struct CommandLine {
     std::string screenshotDir = "."; // --screenshot-dir DIR
     float split = -1.0f; // --split D: start with the A/B split, its divider at D in [0, 1]; < 0 off
     CameraBookmarks bookmarks; // the viewer's, from the --settings file
+    // The viewer's observer view, from the --settings file's "observer" record: the settings'
+    // camera is the observer's, and this the lab camera kept (raylab-render renders the camera).
+    std::optional<Camera> observedLabCamera;
     // bench
     bool json = false;   // --json
     int benchFrames = 5; // --frames N for the bench: best of N

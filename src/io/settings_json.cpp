@@ -130,6 +130,10 @@ public:
                 ok = section(key, value, {{"scale", number(&work_.emissionScale)}});
             } else if (key == "frames") {
                 ok = readFrames(value);
+            } else if (key == "observer") {
+                if (!readObserver(value)) {
+                    return false;
+                }
             } else if (key == "bookmarks") {
                 if (!readBookmarks(value)) {
                     return false;
@@ -205,6 +209,20 @@ public:
         }
         extras_.bookmarks = bookmarks;
         extras_.keys.insert("bookmarks");
+        return true;
+    }
+
+    // "observer": {"lab_camera": camera}.
+    bool readObserver(const Json& value) {
+        if (!value.is_object() || value.size() != 1 || !value.contains("lab_camera")) {
+            return fail("observer", "must be {\"lab_camera\": camera}, got " + shown(value));
+        }
+        Camera camera;
+        if (!readCamera("observer.lab_camera", value["lab_camera"], camera)) {
+            return false;
+        }
+        extras_.observedLabCamera = camera;
+        extras_.keys.insert("observer");
         return true;
     }
 
@@ -495,6 +513,9 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
             frames.push_back(cameraJson(c));
         }
         j["frames"] = std::move(frames);
+    }
+    if (extras.observedLabCamera) {
+        j["observer"] = {{"lab_camera", cameraJson(*extras.observedLabCamera)}};
     }
     return j.dump(2) + "\n";
 }

@@ -65,6 +65,10 @@ struct SettingsFileExtras {
     // "frames": the cameras of an animation (e.g. raylab-render --turntable), one per frame,
     // each {"position", "yaw", "pitch", "fov"}; written only when not empty
     std::vector<Camera> frames;
+    // "observer": {"lab_camera": camera}: the picture is the viewer's observer view (its "camera"
+    // is the observer's), and this is the lab's camera, kept while the observer moved; written
+    // only when set
+    std::optional<Camera> observedLabCamera;
 };
 
 // The most frames a settings file may list.
@@ -77,6 +81,7 @@ struct SettingsJsonExtras {
     std::optional<SplitRecord> split; // its "split", if any
     CameraBookmarks bookmarks;        // its "bookmarks", if any
     std::vector<Camera> frames;       // its "frames", if any
+    std::optional<Camera> observedLabCamera; // its "observer"'s "lab_camera", if any
 };
 
 // Reads JSON text over settings. Returns false with a one-line error naming the key, leaving

@@ -189,6 +189,7 @@ std::optional<Command> commandForKey(int glfwKey) {
     case GLFW_KEY_SLASH: return Command::ToggleKeyList; // H, or ? (Shift + /)
     case GLFW_KEY_Z: return Command::Undo;
     case GLFW_KEY_Y: return Command::Redo;
+    case GLFW_KEY_O: return Command::ToggleObserver;
     default: return std::nullopt;
     }
 }

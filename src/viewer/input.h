@@ -32,6 +32,7 @@ enum class Command {
     NextCompareMode, // M: the split's wipe <-> difference
     Undo,            // Z, with Ctrl
     Redo,            // Y, or Z with Shift, with Ctrl
+    ToggleObserver,  // O: the observer view on / off (observer_view.h)
 };
 
 // A change of the held navigation keys: a navigation key went down or up, or the window lost

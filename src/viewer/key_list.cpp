@@ -15,6 +15,8 @@ constexpr KeyHelp kKeys[] = {
     {"W / S, A / D, Q / E", "move the light forward / back, left / right, down / up"},
     {"V / Shift+V", "the next / previous view (beauty, albedo, direct, indirect, ...)"},
     {"Ctrl + click", "look inside that pixel: its equation with the numbers, its rays drawn"},
+    {"O", "observer view on / off: a second camera sees the lab camera's frustum, the light and "
+          "the inspected rays from outside; the keys, drags and undo then move the observer"},
     {"N", "the lab's N := the path-traced picture's mean N"},
     {"B", "A/B split on / off (drag its divider line)"},
     {"K", "keep the settings as snapshot A and compare live against it"},

@@ -174,6 +174,17 @@ void cameraSection(RenderSettings& edit, const PanelView& view, PanelActions& ac
     if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
         return;
     }
+    bool observer = view.observer;
+    if (ImGui::Checkbox("observer view (O)", &observer)) {
+        actions.toggleObserver = true;
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled(view.observer ? "moving the observer; the lab camera is kept"
+                                      : "moving the lab camera");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("the keys, drags, orbit, these fields, undo and bookmarks move this "
+                          "camera");
+    }
     const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
     ImGui::DragFloat3("position##camera", &edit.camera.position.x, 0.1f * view.step, 0.0f, 0.0f,
                       "%.3f");

@@ -56,6 +56,8 @@ struct PanelView {
     float step = 0.1f;        // navigationStep of the scene: drag speeds
     float maxEpsilon = 0.1f;  // the right end of the epsilon slider
     bool hasEmitters = false; // the scene has emitting triangles (their scale is shown)
+    // The observer view is on (observer_view.h): the camera section shows and moves the observer.
+    bool observer = false;
     // The inspected pixel's numbers (core's inspectPixel), when a pixel is inspected.
     const PixelInspection* inspection = nullptr;
     // The pixel under the cursor and the Shift + drag rectangle's mean (picture_readouts.h).
@@ -73,6 +75,7 @@ struct PanelActions {
     bool openScene = false;       // load PanelState::scenePath
     bool useMeanIndirect = false; // set the lab's N to the path-traced picture's mean N
     bool keepSnapshot = false;    // keep the current settings as snapshot A
+    bool toggleObserver = false;  // the observer view on / off
 };
 
 // Draws the panel for this ImGui frame.

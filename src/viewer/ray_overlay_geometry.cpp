@@ -98,6 +98,8 @@ glm::vec3 overlayColour(OverlayRay kind) {
     case OverlayRay::ShadowClear: return {1.0f, 1.0f, 0.0f};
     case OverlayRay::ShadowBlocked: return {1.0f, 0.0f, 0.0f};
     case OverlayRay::Path: return {1.0f, 0.0f, 1.0f};
+    case OverlayRay::LabCamera: return {1.0f, 1.0f, 1.0f};
+    case OverlayRay::Light: return {0.0f, 1.0f, 1.0f};
     }
     return {1.0f, 1.0f, 1.0f};
 }

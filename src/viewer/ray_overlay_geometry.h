@@ -23,6 +23,8 @@ enum class OverlayRay {
     ShadowClear,   // from the hit to the light's centre, nothing in between
     ShadowBlocked, // from the hit to the closest blocker
     Path,          // from one surface of the inspected path to the next
+    LabCamera,     // the observer view's lab camera: marker, frustum, image plane
+    Light,         // the observer view's light: marker, circle of its radius
 };
 
 struct WorldSegment {
@@ -54,7 +56,7 @@ std::vector<ImageSegment> projectSegments(const PrimaryRays& rays, int width, in
 
 // The colour a kind of ray is drawn in, components 0 or 1 (saturated colours that the lab's
 // picture, lit with an indirect term, never shows): camera ray green, clear shadow ray yellow,
-// blocked shadow ray red, path magenta.
+// blocked shadow ray red, path magenta, the observer view's lab camera white and light cyan.
 glm::vec3 overlayColour(OverlayRay kind);
 
 // The two triangles (6 vertices of x, y) that draw segment a-b, in framebuffer pixels, as a line

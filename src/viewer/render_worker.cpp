@@ -15,6 +15,7 @@
 #include "core/render/film.h"
 #include "core/render/renderer.h"
 #include "difference_view.h"
+#include "parked_film.h"
 #include "split_view.h"
 
 namespace raylab::viewer {
@@ -147,6 +148,7 @@ void RenderWorker::run() {
     RenderJob job;
     uint64_t takenSerial = 0;
     Film films[2];
+    ParkedFilm parked;                // the last picture replaced, resumed when its job comes back
     std::vector<uint8_t> sideBgra[2]; // each side's display bytes, for a split picture
     bool filmsValid = false;
     bool previewTried = false;
@@ -218,6 +220,10 @@ void RenderWorker::run() {
             for (int i = 0; i < sidesOf(job_) && !restart; ++i) {
                 restart = static_cast<uint32_t>(sideSettings(job_, i).samplesPerPixel) <
                           films[i].samples();
+            }
+            if (restart && parked.exchange(job, filmsValid, job_, films[0])) {
+                restart = false; // back to the picture replaced last: its samples resume
+                filmsValid = true;
             }
             job = job_;
             serial = takenSerial = jobSerial_;

@@ -4,7 +4,8 @@
 // samples) until the job's sample cap; then it sleeps on a condition variable (no CPU use). A new
 // job that changes the picture cancels the pass in flight (an atomic flag checked between tiles)
 // and restarts; a change of display transform or of the split's divider only re-maps the sums; a
-// higher cap continues accumulating.
+// higher cap continues accumulating; a return to the picture replaced last resumes its samples
+// (parked_film.h).
 //
 // After a restart, when the last passes show a full pass would take longer than a UI frame
 // budget, the thread first renders a coarse preview (1/k resolution, upscaled by pixel

@@ -48,12 +48,13 @@ SplitRecord rightRecord(const ShownImage& shown, const std::string& path) {
 }
 
 // The extras of the left (or only) side's settings: the split record when the picture is split
-// (`path` empty: the image's name is not known yet, and the record names no other file) and the
-// bookmarks.
+// (`path` empty: the image's name is not known yet, and the record names no other file), the
+// bookmarks and the observer view's lab camera.
 SettingsFileExtras leftExtras(const ShownImage& shown, const std::string& path,
-                              const CameraBookmarks& bookmarks) {
+                              const ScreenshotExtras& viewer) {
     SettingsFileExtras extras;
-    extras.bookmarks = bookmarks;
+    extras.bookmarks = viewer.bookmarks;
+    extras.observedLabCamera = viewer.observedLabCamera;
     if (shown.compare) {
         extras.split = leftRecord(shown, path.empty() ? "x.png" : path);
         if (path.empty()) {
@@ -64,9 +65,9 @@ SettingsFileExtras leftExtras(const ShownImage& shown, const std::string& path,
 }
 
 std::map<std::string, std::string> chunksFor(const ShownImage& shown, const std::string& path,
-                                             const CameraBookmarks& bookmarks) {
+                                             const ScreenshotExtras& viewer) {
     return {{kSettingsChunk,
-             settingsToJson(shown.settings, sceneOf(shown), leftExtras(shown, path, bookmarks))},
+             settingsToJson(shown.settings, sceneOf(shown), leftExtras(shown, path, viewer))},
             {kSceneChunk, sceneOf(shown)},
             {"Software", "raylab"}};
 }
@@ -74,9 +75,9 @@ std::map<std::string, std::string> chunksFor(const ShownImage& shown, const std:
 // The settings beside the image at `path`: its .json, and for a split picture the right side's
 // -right.json too. On failure removes what it wrote.
 bool saveSettingsFor(const std::string& path, const ShownImage& shown,
-                     const CameraBookmarks& bookmarks, std::string& error) {
+                     const ScreenshotExtras& viewer, std::string& error) {
     const std::string json = settingsPathFor(path);
-    if (!saveSettingsFile(json, shown.settings, sceneOf(shown), leftExtras(shown, path, bookmarks),
+    if (!saveSettingsFile(json, shown.settings, sceneOf(shown), leftExtras(shown, path, viewer),
                           error)) {
         return false;
     }
@@ -85,7 +86,8 @@ bool saveSettingsFor(const std::string& path, const ShownImage& shown,
     }
     SettingsFileExtras right;
     right.split = rightRecord(shown, path);
-    right.bookmarks = bookmarks;
+    right.bookmarks = viewer.bookmarks;
+    right.observedLabCamera = viewer.observedLabCamera;
     if (!saveSettingsFile(rightSettingsPathFor(path), *shown.compare, sceneOf(shown), right,
                           error)) {
         std::remove(json.c_str());
@@ -103,9 +105,9 @@ std::string settingsPathFor(const std::string& path) {
 }
 
 bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error,
-                    const CameraBookmarks& bookmarks) {
+                    const ScreenshotExtras& viewer) {
     if (hasExtension(path, ".png")) {
-        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown, path, bookmarks))) {
+        if (!writePng(path, rgbaOf(shown), error, chunksFor(shown, path, viewer))) {
             return false;
         }
     } else if (shown.linear.pixels.empty()) {
@@ -115,7 +117,7 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
                            error)) {
         return false;
     }
-    if (!saveSettingsFor(path, shown, bookmarks, error)) {
+    if (!saveSettingsFor(path, shown, viewer, error)) {
         std::remove(path.c_str());
         return false;
     }
@@ -123,7 +125,7 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
 }
 
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
-                            std::string& error, const CameraBookmarks& bookmarks) {
+                            std::string& error, const ScreenshotExtras& viewer) {
     namespace fs = std::filesystem;
     const fs::path folder = dir.empty() ? fs::path(".") : fs::path(dir);
     // Written under a private name first; link(2) then gives it its final name only if that
@@ -131,7 +133,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
     const fs::path temporary =
         folder / (".raylab-screenshot-" + std::to_string(::getpid()) + ".png.tmp");
     // The PNG's own name is not known yet: its chunk's split record names no other file.
-    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown, "", bookmarks))) {
+    if (!writePng(temporary.string(), rgbaOf(shown), error, chunksFor(shown, "", viewer))) {
         return false;
     }
     bool claimed = false;
@@ -161,7 +163,7 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
         }
         return false;
     }
-    if (!saveSettingsFor(path, shown, bookmarks, error)) {
+    if (!saveSettingsFor(path, shown, viewer, error)) {
         std::remove(path.c_str());
         return false;
     }

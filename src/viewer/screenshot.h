@@ -11,13 +11,25 @@
 // per channel, and both sides' files record "difference": the scale. raylab-render reproduces
 // it from the two sides' files: render each as PFM, subtract, and map with
 // differenceColour (difference_view.h).
+// A screenshot in the observer view is the observer's picture: its settings' "camera" is the
+// observer's (raylab-render reproduces the picture from it), and its "observer" record keeps the
+// lab camera (ScreenshotExtras::observedLabCamera).
 
 #include "io/settings_json.h"
 #include "shown_image.h"
 
+#include <optional>
 #include <string>
 
 namespace raylab::viewer {
+
+// What the viewer keeps in a screenshot's settings files besides the picture's settings: its camera
+// bookmarks and, in the observer view (observer_view.h), the lab camera kept while the picture is
+// the observer's (SettingsFileExtras::observedLabCamera).
+struct ScreenshotExtras {
+    CameraBookmarks bookmarks;
+    std::optional<Camera> observedLabCamera;
+};
 
 inline constexpr const char* kSettingsChunk = "raylab-settings";
 inline constexpr const char* kSceneChunk = "raylab-scene";
@@ -29,16 +41,16 @@ std::string settingsPathFor(const std::string& path);
 // text chunks; .pfm and .exr get ShownImage::linear (which must be there), each atomically
 // (temporary file and rename; a failure leaves no file). Overwrites existing files: the caller
 // chose the name.
-// `bookmarks`: the viewer's camera bookmarks, kept in the settings files.
+// `viewer`: what the viewer keeps in the settings files besides the settings.
 bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error,
-                    const CameraBookmarks& bookmarks = {});
+                    const ScreenshotExtras& viewer = {});
 
 // Writes into `dir` under the first name raylab-0001.png, raylab-0002.png, ... whose .png, .json
 // (and .exr) are free, with the linear picture as raylab-NNNN.exr when ShownImage::linear holds
 // it, never overwriting a file, even one another process creates meanwhile
 // (the name is claimed with link(2)). Sets `path` to the PNG written.
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
-                            std::string& error, const CameraBookmarks& bookmarks = {});
+                            std::string& error, const ScreenshotExtras& viewer = {});
 
 // Reads the settings a raylab screenshot was taken with: a .json beside it, or its .png's
 // "raylab-settings" chunk, over `settings` (its scene and bookmarks into `extras`). False with a

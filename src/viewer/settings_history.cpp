@@ -33,6 +33,13 @@ void SettingsHistory::observe(const RenderSettings& settings, Clock::time_point 
     }
 }
 
+void SettingsHistory::adopt(const RenderSettings& settings) {
+    if (!sameStep(settings, steps_[position_])) {
+        commit(settings);
+    }
+    pending_ = settings;
+}
+
 bool SettingsHistory::undo(RenderSettings& settings) {
     if (!sameStep(settings, steps_[position_])) {
         commit(settings); // the unsettled change, so that redo can bring it back

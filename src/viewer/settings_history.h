@@ -25,6 +25,11 @@ public:
     // becomes a new step (and forgets the steps undone before it).
     void observe(const RenderSettings& settings, Clock::time_point now);
 
+    // The settings become the current step at once (a new step when they differ from it, which
+    // forgets the steps undone): for a history that did not see the settings change meanwhile
+    // (the observer view's, observer_view.h, while the other camera moved).
+    void adopt(const RenderSettings& settings);
+
     // The settings one step back (or forward), at `current`'s render size; false (settings
     // unchanged) when there is none. A change not yet settled counts as a step of its own: undo
     // first returns to the last settled settings.

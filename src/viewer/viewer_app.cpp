@@ -19,6 +19,8 @@
 #include "io/inspection_json.h"
 #include "key_list.h"
 #include "key_relay.h"
+#include "observer_geometry.h"
+#include "observer_view.h"
 #include "orbit_controls.h"
 #include "panel.h"
 #include "panel_cache.h"
@@ -118,7 +120,7 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
                 int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
                 DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
-                bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys,
+                bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys, bool& observerWanted,
                 SettingsHistory& history, const LoadedScene& scene, OrbitControls& orbit,
                 bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
@@ -164,6 +166,8 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
                         panel.settings = next;
                     }
                 }
+            } else if (*command == Command::ToggleObserver) {
+                observerWanted = true;
             } else if (*command == Command::ToggleKeyList) {
                 showKeys = !showKeys;
             } else if (*command == Command::KeepSnapshot) {
@@ -285,12 +289,15 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.bookmarks = command.bookmarks;
     panel.divider = panel.split ? command.split : 0.5f;
     bool showPanel = options.showPanel;
-    bool showKeys = false;                   // the list of keys and mouse gestures (H)
-    SettingsHistory history(panel.settings); // undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y)
-    OrbitControls orbit;                     // right drag orbits, middle drag pans
+    bool showKeys = false; // the list of keys and mouse gestures (H)
+    // The observer view (O) and the undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y) of the camera
+    // being moved.
+    ObserverView observer(panel.settings, command.observedLabCamera);
+    OrbitControls orbit;      // right drag orbits, middle drag pans
     PictureReadouts readouts; // the pixel under the cursor, a Shift + drag rectangle's mean
     std::string pendingDrop = options.drop;       // --drop FILE, dropped once the window shows
     std::optional<RenderSettings> pendingRestore; // a dropped screenshot's, for its scene
+    std::optional<Camera> pendingLab;             // its lab camera, when it is of the observer view
     float step = navigationStep(scene->scene.bounds());
     float maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
 
@@ -391,8 +398,12 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 scene = loaded->scene;
                 step = navigationStep(scene->scene.bounds());
                 maxEpsilon = 100.0f * scaledShadowEpsilon(scene->scene.bounds());
+                observer.leave(panel.settings); // the new scene places the lab camera
                 if (pendingRestore) {
                     panel.settings = *pendingRestore; // a dropped screenshot's own settings
+                    if (pendingLab) {
+                        observer.observe(*pendingLab, pendingRestore->camera, panel.settings);
+                    }
                 } else {
                     placeForScene(scene->scene, isLabBox(*scene), panel.settings);
                 }
@@ -405,6 +416,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 setStatus(panel, loaded->error, true);
             }
             pendingRestore.reset();
+            pendingLab.reset();
             schedule.want(wokeAt);
         }
 
@@ -460,6 +472,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         bool meanIndirectWanted = false;
         bool inspectWanted = false;
+        bool observerWanted = false; // O or the panel's checkbox
         InputEvents events = input.take();
         if (!pendingDrop.empty() && framesShown > 0) {
             events.dropped.push_back(pendingDrop); // --drop: as if dropped once the window shows
@@ -487,9 +500,14 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             glfwSetWindowSize(window.handle(), restored.width, restored.height);
             const std::string restoredScene = extras.scene.empty() ? scene->source : extras.scene;
             if (restoredScene == scene->source) {
+                observer.leave(panel.settings);
                 panel.settings = restored;
+                if (extras.observedLabCamera) { // the observer's picture, the lab camera kept
+                    observer.observe(*extras.observedLabCamera, restored.camera, panel.settings);
+                }
             } else if (loader.start(restoredScene)) {
                 pendingRestore = restored; // applied when the scene has loaded
+                pendingLab = extras.observedLabCamera;
                 panel.scenePath = restoredScene;
             } else {
                 setStatus(panel, "a scene is loading already", true);
@@ -499,7 +517,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         applyInput(events, wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
-                   showKeys, history, *scene, orbit, quit);
+                   showKeys, observerWanted, observer.history(), *scene, orbit, quit);
         readouts.update(window.handle(), events, ImGui::GetIO().WantCaptureMouse, fbWidth, fbHeight,
                         shown);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
@@ -524,6 +542,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             view.maxEpsilon = maxEpsilon;
             view.numbers = &panelNumbers.shown();
             view.hasEmitters = !scene->emitters.empty();
+            view.observer = observer.on();
             view.inspection = inspection ? &*inspection : nullptr;
             view.hover = readouts.hover() ? &*readouts.hover() : nullptr;
             view.rectangle = readouts.rectangleMean() ? &*readouts.rectangleMean() : nullptr;
@@ -545,17 +564,22 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 frameScene(scene->scene, panel.settings);
             }
             if (actions.resetToLab) {
+                observer.leave(panel.settings); // the lab's defaults are the lab camera's
                 resetToLabDefaults(scene->scene, isLabBox(*scene), panel.settings);
             }
             if (actions.openScene && !loader.start(panel.scenePath)) {
                 setStatus(panel, "a scene is loading already", true);
             }
             meanIndirectWanted = meanIndirectWanted || actions.useMeanIndirect;
+            observerWanted = observerWanted || actions.toggleObserver;
             if (actions.keepSnapshot) {
                 panel.snapshot = panel.settings;
                 panel.compareSnapshot = true;
                 panel.split = true;
             }
+        }
+        if (observerWanted) {
+            observer.toggle(panel.settings, scene->scene.bounds());
         }
         if (meanIndirectWanted) {
             if (useMeanIndirect(numbers.picture, panel.settings)) {
@@ -573,7 +597,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         // The job: the panel's settings at the framebuffer's resolution times the scale.
         panel.settings.width = renderSide(fbWidth, panel.resolutionScale);
         panel.settings.height = renderSide(fbHeight, panel.resolutionScale);
-        history.observe(panel.settings, wokeAt);
+        observer.history().observe(panel.settings, wokeAt);
         submitSettings();
         // A picture of the current job that settings reproduce exactly.
         const bool current =
@@ -590,6 +614,15 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         quad.draw(fbWidth, fbHeight);
         if (shown.compare && shown.compareMode == CompareMode::Wipe) {
             drawDivider(splitColumn(fbWidth, shown.divider), fbHeight);
+        }
+        if (const auto lab = observer.keptLabCamera(); lab && shown.bgra.width > 0) {
+            // The lab camera and the light, seen with the camera of the picture shown (the
+            // observer's), over it.
+            overlayLines.draw(observerOverlay(shown.settings.camera, shown.bgra.width,
+                                              shown.bgra.height, *lab, panel.settings.width,
+                                              panel.settings.height, panel.settings.light,
+                                              scene->scene.bounds(), kNearDepthPerStep * step),
+                              shown.bgra.width, shown.bgra.height, fbWidth, fbHeight);
         }
         if (inspection && shown.bgra.width > 0 && shown.bgra.height > 0) {
             // Its rays, pinned in the world, seen with the camera of the picture shown (so they
@@ -614,7 +647,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         if (screenshots > 0 && current && !shown.linear.pixels.empty()) {
             std::string path;
             if (saveNumberedScreenshot(command.screenshotDir, shown, path, error,
-                                       panel.bookmarks)) {
+                                       {panel.bookmarks, observer.keptLabCamera()})) {
                 setStatus(panel, "saved " + path, false);
             } else {
                 setStatus(panel, "screenshot not saved: " + error, true);
@@ -690,7 +723,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     }
     if (!command.screenshot.empty()) {
         if (shown.bgra.width > 0 && !shown.preview) {
-            if (!saveScreenshot(command.screenshot, shown, error, panel.bookmarks)) {
+            if (!saveScreenshot(command.screenshot, shown, error,
+                                {panel.bookmarks, observer.keptLabCamera()})) {
                 std::fprintf(stderr, "raylab: %s\n", error.c_str());
                 exitCode = 1;
             }

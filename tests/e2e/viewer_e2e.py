@@ -23,6 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from e2e_display import Display, DisplayError  # noqa: E402
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
+from e2e_observer import test_observer  # noqa: E402
 from e2e_panel import test_panel  # noqa: E402
 from e2e_path import (test_bookmarks, test_drop, test_inspect, test_mean_n,  # noqa: E402
                       test_orbit, test_snapshot, test_split, test_undo)
@@ -319,6 +320,7 @@ TESTS = {
     "ray_overlay": (test_ray_overlay, True),
     "hover_readout": (test_hover_readout, True),
     "difference": (test_difference, True),
+    "observer": (test_observer, True),
 }
 
 

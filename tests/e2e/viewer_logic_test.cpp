@@ -91,6 +91,34 @@ TEST(ViewerRenderWorker, ChangeRestartsAndDisplayOnlyRemaps) {
     EXPECT_EQ(more.bgra.pixels, reference(*box, settings));
 }
 
+TEST(ViewerRenderWorker, ReturningToThePictureReplacedLastResumesItsSamples) {
+    const auto box = labBox();
+    RenderWorker worker;
+    RenderSettings lab = smallSettings(2);
+    waitFinal(worker, worker.submit({box, lab}));
+    RenderSettings observer = lab;
+    observer.camera.position = {0.0f, 1.4f, -6.5f};
+    lookAt(observer.camera, glm::vec3(0.0f));
+    waitFinal(worker, worker.submit({box, observer}));
+    const uint64_t passes = worker.totals().passes.count;
+    EXPECT_EQ(passes, 4u);
+    // Back to the lab camera: its 2 samples come back at once, no pass traced again.
+    const ShownImage back = waitFinal(worker, worker.submit({box, lab}));
+    EXPECT_EQ(back.settings.samplesPerPixel, 2);
+    EXPECT_EQ(back.bgra.pixels, reference(*box, lab));
+    EXPECT_EQ(worker.totals().passes.count, passes);
+    // And the observer's picture was parked in turn; a higher cap continues it.
+    observer.samplesPerPixel = 3;
+    const ShownImage more = waitFinal(worker, worker.submit({box, observer}));
+    EXPECT_EQ(more.bgra.pixels, reference(*box, observer));
+    EXPECT_EQ(worker.totals().passes.count, passes + 1);
+    // A lower cap than the parked samples starts again.
+    lab.samplesPerPixel = 1;
+    const ShownImage fewer = waitFinal(worker, worker.submit({box, lab}));
+    EXPECT_EQ(fewer.bgra.pixels, reference(*box, lab));
+    EXPECT_EQ(worker.totals().passes.count, passes + 2);
+}
+
 TEST(ViewerRenderWorker, LinearPictureEqualsCoreRender) {
     const auto box = labBox();
     RenderWorker worker;

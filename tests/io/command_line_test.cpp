@@ -294,6 +294,19 @@ TEST_F(SettingsFileTest, FileFirstThenFlagsWhateverTheOrder) {
               "other.ply");
 }
 
+TEST_F(SettingsFileTest, AnObserverViewsFileKeepsTheLabCameraAndRendersTheObservers) {
+    std::ofstream(file_) << R"({"camera": {"position": [0, 1.5, -6.5], "pitch": -13},)"
+                            R"( "observer": {"lab_camera": {"position": [0, 0, -3], "yaw": 5}}})";
+    const Parsed p = parse({"--settings", file_.c_str(), "-o", "x.png"});
+    ASSERT_EQ(p.code, 0) << p.error;
+    EXPECT_EQ(p.line.settings.camera.position, glm::vec3(0.0f, 1.5f, -6.5f)); // the observer's
+    ASSERT_TRUE(p.line.observedLabCamera.has_value());
+    EXPECT_EQ(p.line.observedLabCamera->position, glm::vec3(0.0f, 0.0f, -3.0f));
+    EXPECT_EQ(p.line.observedLabCamera->yawDegrees, 5.0f);
+    std::ofstream(file_) << R"({"camera": {"yaw": 12}})";
+    EXPECT_FALSE(parse({"--settings", file_.c_str(), "-o", "x.png"}).line.observedLabCamera);
+}
+
 TEST_F(SettingsFileTest, BadFilesAreErrorsWithCode1) {
     std::ofstream(file_) << R"({"light": {"intensity": -3}})";
     const Parsed bad = parse({"--settings", file_.c_str(), "-o", "x.png"});

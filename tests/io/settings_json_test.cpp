@@ -140,6 +140,37 @@ TEST(SettingsJson, ExtrasListTheKeysAndTheScene) {
     EXPECT_EQ(settingsToJson(s).find("scene"), std::string::npos);
 }
 
+TEST(SettingsJson, ObserverRecordKeepsTheLabCameraBitForBit) {
+    SettingsFileExtras file;
+    Camera lab;
+    lab.position = {0.1f, -2.0f / 3.0f, -3.0f};
+    lab.yawDegrees = 12.345678f;
+    lab.pitchDegrees = -7.0f / 3.0f;
+    lab.verticalFovDegrees = kLabVerticalFovDegrees;
+    file.observedLabCamera = lab;
+    RenderSettings observer;
+    observer.camera.position = {1.0f, 2.0f, -6.0f};
+    const std::string text = settingsToJson(observer, "cornell", file);
+    RenderSettings read;
+    SettingsJsonExtras extras;
+    std::string error;
+    ASSERT_TRUE(settingsFromJson(text, read, extras, error)) << error;
+    ASSERT_TRUE(extras.observedLabCamera.has_value());
+    EXPECT_TRUE(sameBits(extras.observedLabCamera->position, lab.position));
+    EXPECT_TRUE(sameBits(extras.observedLabCamera->yawDegrees, lab.yawDegrees));
+    EXPECT_TRUE(sameBits(extras.observedLabCamera->pitchDegrees, lab.pitchDegrees));
+    EXPECT_TRUE(sameBits(extras.observedLabCamera->verticalFovDegrees, lab.verticalFovDegrees));
+    EXPECT_EQ(read.camera, observer.camera); // the picture's camera is the observer's
+    EXPECT_EQ(extras.keys.count("observer"), 1u);
+    EXPECT_EQ(settingsToJson(observer, "cornell", SettingsFileExtras{}).find("observer"),
+              std::string::npos);
+    EXPECT_FALSE(
+        settingsFromJson(R"({"observer": {"lab_camera": {"fov": 200}}})", read, extras, error));
+    EXPECT_NE(error.find("observer.lab_camera"), std::string::npos) << error;
+    EXPECT_FALSE(settingsFromJson(R"({"observer": {}})", read, extras, error));
+    EXPECT_NE(error.find("observer: must be"), std::string::npos) << error;
+}
+
 struct BadCase {
     const char* json;
     const char* mustContain; // in the error
