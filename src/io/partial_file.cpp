@@ -152,7 +152,8 @@ bool writePartial(const std::string& path, const PartialRender& partial, std::st
         error);
 }
 
-bool readPartial(const std::string& path, PartialRender& partial, std::string& error) {
+bool readPartial(const std::string& path, PartialRender& partial, std::string& error,
+                 PartialRead what) {
     const SingleLineOnExit oneLine(error);
     if (!checkExrHeader(path, error)) {
         return false;
@@ -229,6 +230,11 @@ bool readPartial(const std::string& path, PartialRender& partial, std::string& e
         result.settingsJson = *settings;
         result.scene = *scene;
         result.sceneHash = *sceneHash;
+        result.hasSquares = squares;
+        if (what == PartialRead::HeaderOnly) {
+            partial = std::move(result);
+            return true;
+        }
         // Rows are read a block at a time and kept as they arrive, so that a file which claims
         // more rows than it holds fails before memory for all of them is taken.
         constexpr int kRowsPerBlock = 16;

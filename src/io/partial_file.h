@@ -27,6 +27,7 @@ struct PartialRender {
     std::string sceneHash;          // sceneContentHash(scene)
     std::vector<PixelSum> sums;     // window.width() x window.height(), row-major from the top
     std::vector<glm::vec3> squares; // the same size, or empty (no noise moments)
+    bool hasSquares = false;        // whether the file holds noise moments (read with its header)
 };
 
 // The partial of a film (its window, range and sums).
@@ -36,7 +37,10 @@ PartialRender partialOf(const Film& film, int imageWidth, int imageHeight);
 bool writePartial(const std::string& path, const PartialRender& partial, std::string& error);
 // Reads a file writePartial wrote; refuses anything else (a plain EXR, a window outside the
 // picture, a bad range) with one line naming the file.
-bool readPartial(const std::string& path, PartialRender& partial, std::string& error);
+// What is read: the header alone (everything but sums and squares, which stay empty) or all.
+enum class PartialRead { HeaderOnly, All };
+bool readPartial(const std::string& path, PartialRender& partial, std::string& error,
+                 PartialRead what = PartialRead::All);
 
 // What identifies a scene's contents: "lab box" for the lab's built-in box, else the 64-bit
 // FNV-1a hash of the file's bytes in hex. Returns false with one line when the file cannot be

@@ -12,6 +12,7 @@
 #include "io/render_report.h"
 #include "io/settings_json.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -80,7 +81,8 @@ int run(int argc, char** argv) {
     std::vector<raylab::PartialRender> parts(inputs.size());
     raylab::RenderSettings settings;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
-        if (!raylab::readPartial(inputs[i], parts[i], error)) {
+        // Headers first: a merge of many large parts holds one part's pixels at a time.
+        if (!raylab::readPartial(inputs[i], parts[i], error, raylab::PartialRead::HeaderOnly)) {
             return fail(1, error);
         }
         raylab::RenderSettings partSettings;
@@ -119,15 +121,43 @@ int run(int argc, char** argv) {
 
     std::vector<raylab::FilmPart> filmParts;
     for (std::size_t i = 0; i < parts.size(); ++i) {
-        filmParts.push_back({inputs[i], parts[i].window, parts[i].firstSample, parts[i].endSample,
-                             parts[i].sums, parts[i].squares});
+        filmParts.push_back(
+            {inputs[i], parts[i].window, parts[i].firstSample, parts[i].endSample, {}, {}});
     }
-    raylab::Film film;
+    uint32_t samples = 0;
     if (const std::string why =
-            raylab::mergeFilmParts(parts[0].imageWidth, parts[0].imageHeight, filmParts, film);
+            raylab::checkFilmParts(parts[0].imageWidth, parts[0].imageHeight, filmParts, samples);
         !why.empty()) {
         return fail(1, why);
     }
+    // Then the pixels, part by part in order of their first sample (so that the float noise
+    // moments add in one order), each checked again against its header.
+    std::vector<std::size_t> order(parts.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&parts](std::size_t a, std::size_t b) {
+        return parts[a].firstSample < parts[b].firstSample;
+    });
+    const bool squares = std::all_of(parts.begin(), parts.end(),
+                                     [](const raylab::PartialRender& p) { return p.hasSquares; });
+    raylab::FilmMerger merger(parts[0].imageWidth, parts[0].imageHeight, squares);
+    for (const std::size_t i : order) {
+        raylab::PartialRender pixels;
+        if (!raylab::readPartial(inputs[i], pixels, error)) {
+            return fail(1, error);
+        }
+        if (pixels.window != parts[i].window || pixels.firstSample != parts[i].firstSample ||
+            pixels.endSample != parts[i].endSample) {
+            return fail(1, "'" + inputs[i] + "' changed while it was merged");
+        }
+        raylab::FilmPart part = filmParts[i];
+        part.sums = pixels.sums;
+        part.squares = pixels.squares;
+        merger.add(part);
+    }
+    raylab::Film film;
+    merger.finish(samples, film);
     settings.samplesPerPixel = static_cast<int>(film.samples());
     const std::string json = raylab::settingsToJson(settings, parts[0].scene);
     if (!raylab::writeImage(output, film.mean(), settings.display, settings.exposure, error,

@@ -17,7 +17,8 @@ std::string rangeText(uint32_t a, uint32_t b) {
 
 } // namespace
 
-std::string mergeFilmParts(int width, int height, std::span<const FilmPart> parts, Film& film) {
+std::string checkFilmParts(int width, int height, std::span<const FilmPart> parts,
+                           uint32_t& samples) {
     if (parts.empty()) {
         return "no parts to merge";
     }
@@ -25,8 +26,7 @@ std::string mergeFilmParts(int width, int height, std::span<const FilmPart> part
     for (const FilmPart& part : parts) {
         const FilmWindow& w = part.window;
         if (w.x0 < 0 || w.y0 < 0 || w.x1 > width || w.y1 > height || w.width() < 1 ||
-            w.height() < 1 || part.endSample <= part.firstSample ||
-            part.sums.size() != static_cast<std::size_t>(w.width()) * w.height()) {
+            w.height() < 1 || part.endSample <= part.firstSample) {
             return part.name + ": its window or range does not fit the picture";
         }
         total = std::max(total, part.endSample);
@@ -72,12 +72,49 @@ std::string mergeFilmParts(int width, int height, std::span<const FilmPart> part
             }
         }
     }
+    samples = total;
+    return {};
+}
 
+FilmMerger::FilmMerger(int width, int height, bool squares)
+    : width_(width), height_(height), squares_(squares),
+      sums_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)),
+      moments_(squares ? sums_.size() : 0, glm::vec3(0.0f)) {}
+
+void FilmMerger::add(const FilmPart& part) {
+    const FilmWindow& w = part.window;
+    const bool squares = squares_ && !part.squares.empty();
+    for (int y = w.y0; y < w.y1; ++y) {
+        for (int x = w.x0; x < w.x1; ++x) {
+            const std::size_t from = static_cast<std::size_t>(y - w.y0) * w.width() + (x - w.x0);
+            const std::size_t to = static_cast<std::size_t>(y) * width_ + x;
+            sums_[to].add(part.sums[from]);
+            if (squares) {
+                moments_[to] += part.squares[from];
+            }
+        }
+    }
+}
+
+void FilmMerger::finish(uint32_t samples, Film& film) {
+    film.reset(width_, height_, FilmLayers{squares_, false});
+    film.assign(sums_, 0, samples);
+    std::copy(moments_.begin(), moments_.end(), film.squares().begin());
+}
+
+std::string mergeFilmParts(int width, int height, std::span<const FilmPart> parts, Film& film) {
+    uint32_t samples = 0;
+    if (std::string why = checkFilmParts(width, height, parts, samples); !why.empty()) {
+        return why;
+    }
+    for (const FilmPart& part : parts) {
+        if (part.sums.size() != static_cast<std::size_t>(part.window.width()) *
+                                    static_cast<std::size_t>(part.window.height())) {
+            return part.name + ": its window or range does not fit the picture";
+        }
+    }
     const bool squares = std::all_of(parts.begin(), parts.end(),
                                      [](const FilmPart& p) { return !p.squares.empty(); });
-    film.reset(width, height, FilmLayers{squares, false});
-    std::vector<PixelSum> sums(film.pixelCount());
-    std::vector<glm::vec3> moments(squares ? film.pixelCount() : 0, glm::vec3(0.0f));
     // Parts in order of their first sample, so that the float moments add in one order too.
     std::vector<const FilmPart*> ordered;
     for (const FilmPart& part : parts) {
@@ -86,22 +123,11 @@ std::string mergeFilmParts(int width, int height, std::span<const FilmPart> part
     std::stable_sort(ordered.begin(), ordered.end(), [](const FilmPart* a, const FilmPart* b) {
         return a->firstSample < b->firstSample;
     });
+    FilmMerger merger(width, height, squares);
     for (const FilmPart* part : ordered) {
-        const FilmWindow& w = part->window;
-        for (int y = w.y0; y < w.y1; ++y) {
-            for (int x = w.x0; x < w.x1; ++x) {
-                const std::size_t from =
-                    static_cast<std::size_t>(y - w.y0) * w.width() + (x - w.x0);
-                const std::size_t to = film.indexOf(x, y);
-                sums[to].add(part->sums[from]);
-                if (squares) {
-                    moments[to] += part->squares[from];
-                }
-            }
-        }
+        merger.add(*part);
     }
-    film.assign(sums, 0, total);
-    std::copy(moments.begin(), moments.end(), film.squares().begin());
+    merger.finish(samples, film);
     return {};
 }
 
