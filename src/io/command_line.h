@@ -10,6 +10,7 @@
 #include "core/scene.h"
 #include "core/scene_framing.h"
 #include "io/settings_json.h"
+#include "io/import_limits.h"
 
 #include <optional>
 #include <string>
@@ -28,6 +29,7 @@ struct CommandLine {
     bool shadowEpsilonGiven = false;
     GivenSettings given;             // the same, field by field
     std::optional<glm::vec3> lookAt; // --look-at, applied after the scene is known
+    ImportLimits importLimits;       // --import-memory-limit, --import-time-limit
 
     bool help = false;
     std::string output;                // render: -o FILE

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "raylab: %s\n", why.c_str());
         return 1;
     }
-    SceneLoadResult loaded = loadSceneForViewer(command.scene);
+    SceneLoadResult loaded = loadSceneForViewer(command.scene, command.importLimits);
     if (!loaded.scene) {
         std::fprintf(stderr, "raylab: %s\n", loaded.error.c_str());
         return 1;

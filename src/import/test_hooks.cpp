@@ -1,0 +1,53 @@
+#include "test_hooks.h"
+
+#include "pipe_output.h"
+
+#include <arpa/inet.h>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <string_view>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace raylab::import {
+
+void runTestHook() {
+    const char* hook = std::getenv("RAYLAB_IMPORT_TEST_CRASH");
+    if (hook == nullptr) {
+        return;
+    }
+    const std::string_view what(hook);
+    if (what == "segv") {
+        std::raise(SIGSEGV);
+    } else if (what == "abort") {
+        std::abort();
+    } else if (what == "hang") {
+        volatile unsigned long spin = 0;
+        for (;;) {
+            spin = static_cast<unsigned long>(spin) + 1; // a volatile store the loop cannot skip
+        }
+    } else if (what == "write") {
+        const int fd = ::open("/tmp/raylab-import-escape", O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (fd >= 0) {
+            ::close(fd);
+        }
+    } else if (what == "socket") {
+        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_port = htons(9);
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        (void)::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address);
+    } else if (what == "exec") {
+        char* const argv[] = {const_cast<char*>("/bin/true"), nullptr};
+        ::execv(argv[0], argv);
+    } else if (what == "garbage") {
+        sendToParent({'n', 'o', 't', ' ', 'a', ' ', 's', 't', 'r', 'e', 'a', 'm'});
+        std::_Exit(0);
+    }
+}
+
+} // namespace raylab::import
