@@ -9,8 +9,8 @@
 #include "core/render_settings.h"
 #include "core/scene.h"
 #include "core/scene_framing.h"
-#include "io/settings_json.h"
 #include "io/import_limits.h"
+#include "io/settings_json.h"
 
 #include <optional>
 #include <string>
