@@ -16,17 +16,17 @@ namespace {
 
 // operator new failed: the memory limit was reached. Allocating anything more is hopeless, so
 // the exit code alone tells the parent, which knows the limit it gave.
-[[noreturn]] void outOfMemory() { ::_exit(kExitOutOfMemory); }
+[[noreturn]] void outOfMemory() { ::_exit(kImportExitOutOfMemory); }
 
 // Assimp's failed internal check: its text to the parent, then the end; nothing unwinds through
 // Assimp.
 [[noreturn]] void assertionFailed(const char* message) {
     sendToParent(encodeImportError(message));
-    ::_exit(kExitAssertion);
+    ::_exit(kImportExitAssertion);
 }
 
 int sendError(const std::string& error, int code) {
-    return sendToParent(encodeImportError(error)) ? code : kExitPipeClosed;
+    return sendToParent(encodeImportError(error)) ? code : kImportExitPipeClosed;
 }
 
 } // namespace
@@ -34,7 +34,7 @@ int sendError(const std::string& error, int code) {
 int runImport(const std::string& path, uint64_t memoryBytes) {
     std::string error;
     if (!applyLimits(memoryBytes, error) || !enterSandbox(error)) {
-        return sendError(error, kExitUsage);
+        return sendError(error, kImportExitUsage);
     }
     std::set_new_handler(outOfMemory);
     setAssimpAssertionHandler(assertionFailed);
@@ -43,10 +43,10 @@ int runImport(const std::string& path, uint64_t memoryBytes) {
     Scene scene;
     MeshLoadReport report;
     if (!loadMesh(path, scene, report, error)) {
-        return sendError(error, kExitDone);
+        return sendError(error, kImportExitDone);
     }
     const std::vector<uint8_t> stream = encodeImportScene(scene, report, {});
-    return sendToParent(stream) ? kExitDone : kExitPipeClosed;
+    return sendToParent(stream) ? kImportExitDone : kImportExitPipeClosed;
 }
 
 } // namespace raylab::import

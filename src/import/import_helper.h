@@ -7,13 +7,7 @@
 
 namespace raylab::import {
 
-// The exit codes the parent reads (io/mesh_import.cpp).
-inline constexpr int kExitDone = 0;        // the stream was sent (a scene or an error)
-inline constexpr int kExitUsage = 2;       // bad arguments; an error stream was sent
-inline constexpr int kExitOutOfMemory = 3; // operator new failed under the memory limit
-inline constexpr int kExitAssertion = 4;   // Assimp's internal check failed; its text was sent
-inline constexpr int kExitPipeClosed = 5;  // the parent stopped reading
-
+// Returns the process's exit code (kImportExit*, io/import_stream.h).
 int runImport(const std::string& path, uint64_t memoryBytes);
 
 } // namespace raylab::import

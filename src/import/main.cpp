@@ -17,19 +17,19 @@ int main(int argc, char** argv) {
     // Ends with the parent (the pipe then has no reader), even if the parent is killed.
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() == 1) {
-        return raylab::import::kExitPipeClosed;
+        return raylab::kImportExitPipeClosed;
     }
     char* end = nullptr;
     if (argc != 5 || std::string(argv[1]) != "--memory-limit-bytes" ||
         std::string(argv[3]) != "--") {
         raylab::import::sendToParent(raylab::encodeImportError(
             "usage: raylab-import --memory-limit-bytes N -- FILE (started by raylab's programs)"));
-        return raylab::import::kExitUsage;
+        return raylab::kImportExitUsage;
     }
     const unsigned long long memory = std::strtoull(argv[2], &end, 10);
     if (end == argv[2] || *end != '\0' || memory == 0) {
         raylab::import::sendToParent(raylab::encodeImportError("bad memory limit"));
-        return raylab::import::kExitUsage;
+        return raylab::kImportExitUsage;
     }
     return raylab::import::runImport(argv[4], memory);
 }

@@ -25,6 +25,13 @@
 namespace raylab {
 
 inline constexpr uint32_t kImportStreamVersion = 1;
+
+// raylab-import's exit codes, the other half of what it tells its parent.
+inline constexpr int kImportExitDone = 0;        // the stream was sent (a scene or an error)
+inline constexpr int kImportExitUsage = 2;       // bad arguments or no sandbox; an error was sent
+inline constexpr int kImportExitOutOfMemory = 3; // operator new failed under the memory limit
+inline constexpr int kImportExitAssertion = 4;   // Assimp's internal check failed; its text sent
+inline constexpr int kImportExitPipeClosed = 5;  // the parent stopped reading
 inline constexpr std::size_t kImportTriangleBytes = 40;
 // Hard caps: nothing larger is read. 64 Mi triangles (2.5 GiB of stream) is far beyond any mesh
 // the viewer could trace interactively.

@@ -16,9 +16,6 @@ namespace raylab {
 
 namespace {
 
-// The helper's exit code when operator new failed under its memory limit (src/import).
-constexpr int kExitOutOfMemory = 3;
-
 // "4", "0.5": a limit as the user would have typed it.
 std::string number(double value) {
     char text[32];
@@ -52,7 +49,7 @@ std::string runProblem(const HelperRun& run, const ImportLimits& limits, double 
     if (run.signal != 0) {
         return "the importer crashed (" + signalName(run.signal) + ")";
     }
-    if (run.exitCode == kExitOutOfMemory) {
+    if (run.exitCode == kImportExitOutOfMemory) {
         return "needed more than " + number(memoryGiB) +
                " GiB (the importer's memory limit; see --import-memory-limit)";
     }
