@@ -4,7 +4,7 @@
 
 #include "sandbox.h"
 
-#include "sanitizer_build.h"
+#include "io/sanitizer_build.h"
 
 #include <cerrno>
 #include <cstring>

@@ -3,7 +3,7 @@
 // runtimes reserve huge address ranges and make system calls of their own (LeakSanitizer's
 // clone and ptrace at exit, for one). GCC says so with __SANITIZE_*__, clang with __has_feature.
 
-namespace raylab::import {
+namespace raylab {
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 inline constexpr bool kSanitizerBuild = true;
@@ -17,4 +17,4 @@ inline constexpr bool kSanitizerBuild = false;
 inline constexpr bool kSanitizerBuild = false;
 #endif
 
-} // namespace raylab::import
+} // namespace raylab
