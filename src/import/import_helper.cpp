@@ -45,8 +45,11 @@ int runImport(const std::string& path, uint64_t memoryBytes) {
     if (!loadMesh(path, scene, report, error)) {
         return sendError(error, kImportExitDone);
     }
-    const std::vector<uint8_t> stream = encodeImportScene(scene, report, {});
-    return sendToParent(stream) ? kImportExitDone : kImportExitPipeClosed;
+    const bool sent =
+        writeImportScene(scene, report, {}, [](const uint8_t* bytes, std::size_t size) {
+            return sendToParent(bytes, size);
+        });
+    return sent ? kImportExitDone : kImportExitPipeClosed;
 }
 
 } // namespace raylab::import

@@ -6,9 +6,13 @@
 namespace raylab::import {
 
 bool sendToParent(const std::vector<uint8_t>& bytes) {
+    return sendToParent(bytes.data(), bytes.size());
+}
+
+bool sendToParent(const uint8_t* bytes, std::size_t size) {
     std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(kResultFd, bytes.data() + done, bytes.size() - done);
+    while (done < size) {
+        const ssize_t n = ::write(kResultFd, bytes + done, size - done);
         if (n < 0 && errno == EINTR) {
             continue;
         }

@@ -2,6 +2,7 @@
 
 #include "io/helper_process.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -69,11 +70,22 @@ int prepare(SpawnSetup& s, int writeEnd) {
     return rc;
 }
 
-// Reads what is there without blocking; false at end of file or on an error.
-bool drain(int fd, std::vector<uint8_t>& data, std::size_t maxBytes, bool& overCap) {
+// Reads what is there without blocking; false at end of file or on an error. The buffer grows
+// by up to 1 MiB a read, or takes the whole room once options.expectedBytes knows it (`sized`).
+bool drain(int fd, std::vector<uint8_t>& data, const HelperOptions& options, bool& sized,
+           bool& overCap) {
+    const std::size_t maxBytes = options.maxBytes;
+    constexpr std::size_t kPiece = std::size_t{1} << 20;
     for (;;) {
+        if (!sized && options.expectedBytes) {
+            if (const std::size_t total = options.expectedBytes(data.data(), data.size())) {
+                data.reserve(std::min(total, maxBytes));
+                sized = true;
+            }
+        }
         const std::size_t old = data.size();
-        const std::size_t chunk = std::size_t{1} << 20;
+        const std::size_t room = data.capacity() - old;
+        const std::size_t chunk = room > 0 ? std::min(room, kPiece) : kPiece;
         data.resize(old + chunk);
         const ssize_t n = ::read(fd, data.data() + old, chunk);
         data.resize(old + (n > 0 ? static_cast<std::size_t>(n) : 0));
@@ -138,10 +150,11 @@ HelperRun runHelper(const std::vector<std::string>& argv, const HelperOptions& o
         killed = true;
     };
     bool open = true;
+    bool sized = false;
     while (open && !killed) {
         pollfd p{readEnd.fd, POLLIN, 0};
         ::poll(&p, 1, kPollMs);
-        open = drain(readEnd.fd, run.data, options.maxBytes, run.overCap);
+        open = drain(readEnd.fd, run.data, options, sized, run.overCap);
         const auto now = Clock::now();
         if (run.overCap) {
             killChild();

@@ -24,8 +24,11 @@ struct HelperRun {
 };
 
 struct HelperOptions {
-    double seconds = 60.0; // wall clock before the helper is killed
-    std::size_t maxBytes = 0;
+    double seconds = 60.0;    // wall clock before the helper is killed
+    std::size_t maxBytes = 0; // more than this on descriptor 3 kills the helper
+    // Given what has arrived, the total the helper will send when its header says so, else 0;
+    // the buffer then takes that room at once (at most maxBytes). May be empty.
+    std::function<std::size_t(const uint8_t* data, std::size_t size)> expectedBytes;
     std::function<bool()> cancelled;             // polled about every 20 ms; may be empty
     std::function<void(double seconds)> running; // likewise; the time since the spawn
 };

@@ -3,6 +3,7 @@
 
 #include "io/import_stream.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -19,37 +20,83 @@ constexpr uint8_t kKindError = 1;
 static_assert(std::endian::native == std::endian::little,
               "the import stream is written and read as the machine's little-endian bytes");
 
+constexpr std::size_t kHeaderBytes = sizeof kMagic + 4 + 8 + 1;
+constexpr std::size_t kReportBytes = 4 * 8 + 1;
+constexpr std::size_t kSinkPiece = std::size_t{1} << 20;
+
+// Gathers what is written into pieces of kSinkPiece bytes for the sink; after the sink failed,
+// writes nothing more.
 class Writer {
 public:
+    explicit Writer(const ImportSink& sink) : sink_(sink) { buffer_.reserve(kSinkPiece); }
     void bytes(const void* data, std::size_t n) {
         const auto* p = static_cast<const uint8_t*>(data);
-        out_.insert(out_.end(), p, p + n);
+        while (n > 0) {
+            const std::size_t take = std::min(n, kSinkPiece - buffer_.size());
+            buffer_.insert(buffer_.end(), p, p + take);
+            p += take;
+            n -= take;
+            if (buffer_.size() == kSinkPiece) {
+                flush();
+            }
+        }
     }
-    void u8(uint8_t v) { out_.push_back(v); }
+    void u8(uint8_t v) { bytes(&v, sizeof v); }
     void u32(uint32_t v) { bytes(&v, sizeof v); }
     void u64(uint64_t v) { bytes(&v, sizeof v); }
-    void f32(float v) { bytes(&v, sizeof v); }
     void vec3(const glm::vec3& v) {
-        f32(v.x);
-        f32(v.y);
-        f32(v.z);
+        const float f[3] = {v.x, v.y, v.z};
+        bytes(f, sizeof f);
+    }
+    // One triangle's kImportTriangleBytes in a single copy.
+    void triangle(const Triangle& t) {
+        uint8_t packed[kImportTriangleBytes];
+        const float f[9] = {t.v0.x, t.v0.y, t.v0.z, t.v1.x, t.v1.y, t.v1.z, t.v2.x, t.v2.y, t.v2.z};
+        std::memcpy(packed, f, sizeof f);
+        std::memcpy(packed + sizeof f, &t.material, sizeof t.material);
+        bytes(packed, sizeof packed);
     }
     void text(const std::string& s) {
         const std::string line = sanitisedLine(s);
         u32(static_cast<uint32_t>(line.size()));
         bytes(line.data(), line.size());
     }
-    void reserve(std::size_t n) { out_.reserve(n); }
-    std::vector<uint8_t> take() { return std::move(out_); }
+    // Hands over what is left; false when the sink failed at any point.
+    bool finish() {
+        flush();
+        return ok_;
+    }
 
 private:
-    std::vector<uint8_t> out_;
+    void flush() {
+        if (ok_ && !buffer_.empty()) {
+            ok_ = sink_(buffer_.data(), buffer_.size());
+        }
+        buffer_.clear();
+    }
+    const ImportSink& sink_;
+    std::vector<uint8_t> buffer_;
+    bool ok_ = true;
 };
 
-void writeHeader(Writer& w, uint8_t kind) {
+void writeHeader(Writer& w, uint64_t total, uint8_t kind) {
     w.bytes(kMagic, sizeof kMagic);
     w.u32(kImportStreamVersion);
+    w.u64(total);
     w.u8(kind);
+}
+
+// The bytes Writer::text writes for `s`.
+std::size_t textBytes(const std::string& s) { return 4 + std::min(s.size(), kImportMaxText); }
+
+// The stream a vector sink collects.
+std::vector<uint8_t> collect(const std::function<void(const ImportSink&)>& write) {
+    std::vector<uint8_t> out;
+    write([&out](const uint8_t* bytes, std::size_t size) {
+        out.insert(out.end(), bytes, bytes + size);
+        return true;
+    });
+    return out;
 }
 
 // Reads fixed-size values off the front of a byte range; every read checks the bytes remain.
@@ -192,17 +239,24 @@ std::string sanitisedLine(const std::string& text) {
     return line;
 }
 
-std::vector<uint8_t> encodeImportScene(const Scene& scene, const MeshLoadReport& report,
-                                       const std::vector<std::string>& warnings) {
-    Writer w;
-    w.reserve(256 + scene.materials.size() * 64 + scene.triangles.size() * kImportTriangleBytes);
-    writeHeader(w, kKindScene);
+bool writeImportScene(const Scene& scene, const MeshLoadReport& report,
+                      const std::vector<std::string>& warnings, const ImportSink& sink) {
+    const std::size_t kept = std::min(warnings.size(), kImportMaxWarnings);
+    std::size_t total = kHeaderBytes + kReportBytes + 4 + 4 + 8 +
+                        scene.triangles.size() * kImportTriangleBytes + sizeof kEnd;
+    for (std::size_t i = 0; i < kept; ++i) {
+        total += textBytes(warnings[i]);
+    }
+    for (const Material& m : scene.materials) {
+        total += textBytes(m.name) + 24;
+    }
+    Writer w(sink);
+    writeHeader(w, total, kKindScene);
     w.u64(report.nonFiniteTriangles);
     w.u64(report.degenerateTriangles);
     w.u64(report.badIndexFaces);
     w.u64(report.nonTriangleFaces);
     w.u8(report.missingMaterialLibrary ? 1 : 0);
-    const std::size_t kept = std::min(warnings.size(), kImportMaxWarnings);
     w.u32(static_cast<uint32_t>(kept));
     for (std::size_t i = 0; i < kept; ++i) {
         w.text(warnings[i]);
@@ -215,21 +269,35 @@ std::vector<uint8_t> encodeImportScene(const Scene& scene, const MeshLoadReport&
     }
     w.u64(scene.triangles.size());
     for (const Triangle& t : scene.triangles) {
-        w.vec3(t.v0);
-        w.vec3(t.v1);
-        w.vec3(t.v2);
-        w.u32(t.material);
+        w.triangle(t);
     }
     w.bytes(kEnd, sizeof kEnd);
-    return w.take();
+    return w.finish();
+}
+
+std::vector<uint8_t> encodeImportScene(const Scene& scene, const MeshLoadReport& report,
+                                       const std::vector<std::string>& warnings) {
+    return collect(
+        [&](const ImportSink& sink) { writeImportScene(scene, report, warnings, sink); });
 }
 
 std::vector<uint8_t> encodeImportError(const std::string& error) {
-    Writer w;
-    writeHeader(w, kKindError);
-    w.text(error);
-    w.bytes(kEnd, sizeof kEnd);
-    return w.take();
+    return collect([&](const ImportSink& sink) {
+        Writer w(sink);
+        writeHeader(w, kHeaderBytes + textBytes(error) + sizeof kEnd, kKindError);
+        w.text(error);
+        w.bytes(kEnd, sizeof kEnd);
+        w.finish();
+    });
+}
+
+std::size_t declaredImportStreamBytes(const uint8_t* bytes, std::size_t size) {
+    if (size < kHeaderBytes || std::memcmp(bytes, kMagic, sizeof kMagic) != 0) {
+        return 0;
+    }
+    uint64_t total = 0;
+    std::memcpy(&total, bytes + sizeof kMagic + 4, sizeof total);
+    return static_cast<std::size_t>(total);
 }
 
 bool parseImportStream(const uint8_t* bytes, std::size_t size, ImportOutcome& out,
@@ -242,6 +310,7 @@ bool parseImportStream(const uint8_t* bytes, std::size_t size, ImportOutcome& ou
     Reader r(bytes, size);
     char magic[sizeof kMagic] = {};
     uint32_t version = 0;
+    uint64_t total = 0;
     uint8_t kind = 0;
     if (!r.bytes(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof kMagic) != 0) {
         problem = "the importer's answer is not an import stream";
@@ -249,6 +318,10 @@ bool parseImportStream(const uint8_t* bytes, std::size_t size, ImportOutcome& ou
     }
     if (!r.u32(version) || version != kImportStreamVersion) {
         problem = "the importer speaks another stream version";
+        return false;
+    }
+    if (!r.u64(total) || total != size) {
+        problem = "the importer's answer is not as long as it says";
         return false;
     }
     if (!r.u8(kind) || (kind != kKindScene && kind != kKindError)) {

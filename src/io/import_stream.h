@@ -1,11 +1,13 @@
 #pragma once
 // The byte stream raylab-import sends its parent over a pipe: a versioned, little-endian record
-// of one import's outcome. The helper writes it with encodeImport*; the parent reads it with
-// parseImportStream, which trusts nothing: every count is checked against the bytes that are
-// there, every index and value against its range, and the whole against a hard size cap.
+// of one import's outcome. The helper writes it with writeImportScene (or encodeImport*); the
+// parent reads it with parseImportStream, which trusts nothing: every count is checked against
+// the bytes that are there, every index and value against its range, and the whole against a
+// hard size cap.
 //
 // Layout (all integers little-endian, floats IEEE-754 binary32):
-//   magic "RLIMPORT", u32 version (kImportStreamVersion), u8 kind
+//   magic "RLIMPORT", u32 version (kImportStreamVersion), u64 total bytes of the stream (so the
+//   parent can take the room at once), u8 kind
 //   kind 0 (scene):
 //     report: u64 nonFinite, u64 degenerate, u64 badIndex, u64 nonTriangle, u8 missingMtl
 //     u32 warnings, each: u32 length, bytes
@@ -19,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,10 +54,22 @@ struct ImportOutcome {
     std::string error;                 // the helper's reason, one line, when !ok
 };
 
-// The helper's side. Both return the whole stream, end mark included.
+// Takes the next piece of a stream being written; false stops the writing (the pipe is gone).
+using ImportSink = std::function<bool(const uint8_t* bytes, std::size_t size)>;
+
+// The helper's side. writeImportScene hands the stream to `sink` in pieces of at most 1 MiB,
+// without holding it whole; false when the sink failed. At most kImportMaxWarnings warnings are
+// kept. The encode* functions return the whole stream, end mark included.
+bool writeImportScene(const Scene& scene, const MeshLoadReport& report,
+                      const std::vector<std::string>& warnings, const ImportSink& sink);
 std::vector<uint8_t> encodeImportScene(const Scene& scene, const MeshLoadReport& report,
                                        const std::vector<std::string>& warnings);
 std::vector<uint8_t> encodeImportError(const std::string& error);
+
+// The total a stream's header declares, once `size` bytes of it have arrived; 0 while the header
+// is incomplete or not an import stream's. A hint for the reader's buffer: parseImportStream
+// checks it against the bytes.
+std::size_t declaredImportStreamBytes(const uint8_t* bytes, std::size_t size);
 
 // The parent's side. Returns true with `out` filled when `bytes` is a well-formed stream whose
 // scene has at least one triangle, every triangle valid (finite, non-zero area) with a material

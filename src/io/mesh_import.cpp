@@ -73,6 +73,7 @@ bool importMesh(const std::string& path, const ImportLimits& limits, Scene& scen
     HelperOptions options;
     options.seconds = limits.seconds;
     options.maxBytes = kImportMaxStreamBytes;
+    options.expectedBytes = declaredImportStreamBytes;
     options.cancelled = control.cancelled;
     options.running = control.running;
     const HelperRun run = runHelper(

@@ -33,7 +33,8 @@ Scene twoTriangles() {
 }
 
 // Offsets into the stream of twoTriangles() with the report below and no warnings.
-constexpr std::size_t kHeader = 8 + 4 + 1;
+constexpr std::size_t kHeader = 8 + 4 + 8 + 1;
+constexpr std::size_t kTotal = 8 + 4; // the u64 total in the header
 constexpr std::size_t kReport = 4 * 8 + 1;
 constexpr std::size_t kMaterialCount = kHeader + kReport + 4;
 constexpr std::size_t kFirstMaterial = kMaterialCount + 4;
@@ -116,6 +117,41 @@ TEST(ImportStream, TrailingBytesAreRefused) {
     std::vector<uint8_t> bytes = goodStream();
     bytes.push_back(0);
     expectRefused(bytes, "trailing byte");
+}
+
+TEST(ImportStream, TheHeaderDeclaresTheTotalOnceItIsThere) {
+    const std::vector<uint8_t> bytes = goodStream();
+    EXPECT_EQ(declaredImportStreamBytes(bytes.data(), bytes.size()), bytes.size());
+    EXPECT_EQ(declaredImportStreamBytes(bytes.data(), kHeader), bytes.size());
+    EXPECT_EQ(declaredImportStreamBytes(bytes.data(), kHeader - 1), 0u);
+    const std::vector<uint8_t> error = encodeImportError("no such file");
+    EXPECT_EQ(declaredImportStreamBytes(error.data(), error.size()), error.size());
+    std::vector<uint8_t> other = bytes;
+    other[0] = 'X';
+    EXPECT_EQ(declaredImportStreamBytes(other.data(), other.size()), 0u);
+}
+
+// A scene of more than 1 MiB reaches the sink in pieces of at most 1 MiB that make the same
+// stream as encodeImportScene; a sink that fails stops the writing.
+TEST(ImportStream, WritingGoesToTheSinkInPieces) {
+    Scene big = twoTriangles();
+    big.triangles.resize(60000, big.triangles[0]); // 2.4 MB of triangles
+    std::vector<uint8_t> joined;
+    std::size_t pieces = 0;
+    ASSERT_TRUE(writeImportScene(big, MeshLoadReport{}, {}, [&](const uint8_t* p, std::size_t n) {
+        EXPECT_LE(n, std::size_t{1} << 20);
+        joined.insert(joined.end(), p, p + n);
+        ++pieces;
+        return true;
+    }));
+    EXPECT_EQ(pieces, 3u);
+    EXPECT_EQ(joined, encodeImportScene(big, MeshLoadReport{}, {}));
+    pieces = 0;
+    EXPECT_FALSE(writeImportScene(big, MeshLoadReport{}, {}, [&](const uint8_t*, std::size_t) {
+        ++pieces;
+        return false;
+    }));
+    EXPECT_EQ(pieces, 1u);
 }
 
 TEST(ImportStream, TheOffsetsOfTheseTestsAreRight) {
@@ -201,8 +237,14 @@ TEST(ImportStream, HeaderProblemsAreRefused) {
     putU32(bytes, 8, kImportStreamVersion + 1);
     expectRefused(bytes, "version");
     bytes = goodStream();
-    bytes[12] = 7;
+    bytes[kHeader - 1] = 7;
     expectRefused(bytes, "kind");
+    for (const uint64_t lie : {uint64_t{0}, uint64_t{bytes.size() - 1}, uint64_t{bytes.size() + 1},
+                               std::numeric_limits<uint64_t>::max()}) {
+        bytes = goodStream();
+        std::memcpy(bytes.data() + kTotal, &lie, sizeof lie);
+        expectRefused(bytes, "declared total");
+    }
     bytes = goodStream();
     bytes[bytes.size() - 1] = 'X';
     expectRefused(bytes, "end mark");
