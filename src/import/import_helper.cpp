@@ -1,5 +1,6 @@
 #include "import_helper.h"
 
+#include "captured_output.h"
 #include "io/assimp_assert.h"
 #include "io/import_stream.h"
 #include "io/mesh_loader.h"
@@ -33,7 +34,8 @@ int sendError(const std::string& error, int code) {
 
 int runImport(const std::string& path, uint64_t memoryBytes) {
     std::string error;
-    if (!applyLimits(memoryBytes, error) || !enterSandbox(error)) {
+    CapturedOutput output;
+    if (!output.begin(error) || !applyLimits(memoryBytes, error) || !enterSandbox(error)) {
         return sendError(error, kImportExitUsage);
     }
     std::set_new_handler(outOfMemory);
@@ -46,7 +48,7 @@ int runImport(const std::string& path, uint64_t memoryBytes) {
         return sendError(error, kImportExitDone);
     }
     const bool sent =
-        writeImportScene(scene, report, {}, [](const uint8_t* bytes, std::size_t size) {
+        writeImportScene(scene, report, output.lines(), [](const uint8_t* bytes, std::size_t size) {
             return sendToParent(bytes, size);
         });
     return sent ? kImportExitDone : kImportExitPipeClosed;

@@ -4,9 +4,11 @@
 
 #include <arpa/inet.h>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <iostream>
 #include <netinet/in.h>
 #include <string_view>
 #include <sys/socket.h>
@@ -44,6 +46,9 @@ void runTestHook() {
     } else if (what == "exec") {
         char* const argv[] = {const_cast<char*>("/bin/true"), nullptr};
         ::execv(argv[0], argv);
+    } else if (what == "print") {
+        std::printf("nullptr returned by creating DDLNode.\n");
+        std::cerr << "a second line\x1b[31m, on stderr\n";
     } else if (what == "garbage") {
         sendToParent({'n', 'o', 't', ' ', 'a', ' ', 's', 't', 'r', 'e', 'a', 'm'});
         std::_Exit(0);

@@ -1,5 +1,5 @@
 #pragma once
-// Test-only misbehaviour, honoured only by raylab-import and only after its sandbox is in place,
+// Test-only behaviour, honoured only by raylab-import and only after its sandbox is in place,
 // so tests can check what the parent makes of a helper that crashes, hangs or tries to escape.
 // RAYLAB_IMPORT_TEST_CRASH names it:
 //   segv     raise SIGSEGV, as a memory error in Assimp would
@@ -9,6 +9,7 @@
 //   socket   make a network socket and connect it (likewise)
 //   exec     run /bin/true (likewise)
 //   garbage  answer with bytes that are not an import stream
+//   print    print on standard output and error, as some Assimp importers do, then go on
 // Anything else, or the variable unset, does nothing.
 
 namespace raylab::import {

@@ -8,6 +8,7 @@
 #include "temp_dir_test.h"
 #include "test_assets.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -179,6 +180,20 @@ TEST_F(MeshImport, CancelStopsTheHelperAtOnce) {
     const Imported r = import(obj, ImportLimits{}, control);
     expectFailure(r, obj, "cancelled");
     EXPECT_LT(r.seconds, 3.0);
+}
+
+// What the reader prints itself comes back as the import's warnings, one printable line each.
+TEST_F(MeshImport, TheReadersOwnOutputBecomesWarnings) {
+    const std::string obj = triangleObj();
+    ScopedEnv print("RAYLAB_IMPORT_TEST_CRASH", "print");
+    const Imported r = import(obj);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.scene.triangles.size(), 1u);
+    // Standard error is unbuffered, standard output flushed at the end: the order may differ.
+    std::vector<std::string> lines = r.warnings;
+    std::sort(lines.begin(), lines.end());
+    EXPECT_EQ(lines, (std::vector<std::string>{"a second line [31m, on stderr",
+                                               "nullptr returned by creating DDLNode."}));
 }
 
 TEST_F(MeshImport, GarbageFromTheHelperIsRefused) {
