@@ -23,6 +23,9 @@ void runTestHook() {
     }
     const std::string_view what(hook);
     if (what == "segv") {
+        // The default disposition, as a release build has it: a sanitizer's runtime would
+        // otherwise catch the signal, report it and exit with a code of its own.
+        std::signal(SIGSEGV, SIG_DFL);
         std::raise(SIGSEGV);
     } else if (what == "abort") {
         std::abort();
@@ -46,6 +49,8 @@ void runTestHook() {
     } else if (what == "exec") {
         char* const argv[] = {const_cast<char*>("/bin/true"), nullptr};
         ::execv(argv[0], argv);
+    } else if (what == "exit") {
+        std::_Exit(66);
     } else if (what == "print") {
         std::printf("nullptr returned by creating DDLNode.\n");
         std::cerr << "a second line\x1b[31m, on stderr\n";

@@ -82,6 +82,10 @@ bool importMesh(const std::string& path, const ImportLimits& limits, Scene& scen
         error = prefix + problem;
         return false;
     }
+    if (run.data.empty() && run.exitCode != 0) {
+        error = prefix + "the importer failed (exit code " + std::to_string(run.exitCode) + ")";
+        return false;
+    }
     ImportOutcome outcome;
     std::string problem;
     if (!parseImportStream(run.data.data(), run.data.size(), outcome, problem)) {

@@ -196,6 +196,12 @@ TEST_F(MeshImport, TheReadersOwnOutputBecomesWarnings) {
                                                "nullptr returned by creating DDLNode."}));
 }
 
+TEST_F(MeshImport, AnExitWithoutAnAnswerIsNamedByItsCode) {
+    const std::string obj = triangleObj();
+    ScopedEnv exit("RAYLAB_IMPORT_TEST_CRASH", "exit");
+    expectFailure(import(obj), obj, "the importer failed (exit code 66)");
+}
+
 TEST_F(MeshImport, GarbageFromTheHelperIsRefused) {
     const std::string obj = triangleObj();
     ScopedEnv crash("RAYLAB_IMPORT_TEST_CRASH", "garbage");
