@@ -2,6 +2,8 @@
 
 #include "io/helper_process.h"
 
+#include "io/huge_pages.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -80,6 +82,7 @@ bool drain(int fd, std::vector<uint8_t>& data, const HelperOptions& options, boo
         if (!sized && options.expectedBytes) {
             if (const std::size_t total = options.expectedBytes(data.data(), data.size())) {
                 data.reserve(std::min(total, maxBytes));
+                adviseHugePages(data.data() + data.size(), data.capacity() - data.size());
                 sized = true;
             }
         }

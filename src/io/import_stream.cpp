@@ -3,6 +3,8 @@
 
 #include "io/import_stream.h"
 
+#include "io/huge_pages.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -208,6 +210,8 @@ bool readScene(Reader& r, ImportOutcome& out, std::string& problem) {
         problem = "a triangle count that does not match the data";
         return false;
     }
+    out.scene.triangles.reserve(triangles);
+    adviseHugePages(out.scene.triangles.data(), triangles * sizeof(Triangle));
     out.scene.triangles.resize(triangles);
     for (Triangle& t : out.scene.triangles) {
         r.vec3(t.v0); // the sizes were checked above
