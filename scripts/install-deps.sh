@@ -8,6 +8,7 @@ packages=(
     libglm-dev libassimp-dev libpng-dev nlohmann-json3-dev libopenexr-dev
     libgtest-dev libgmock-dev libembree-dev
     libglfw3-dev libimgui-dev python3-glad libgl-dev
+    libseccomp-dev strace
     xvfb xauth xdotool libgl1-mesa-dri openbox
     slurm-wlm munge
 )

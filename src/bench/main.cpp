@@ -25,7 +25,8 @@
 #include "core/render/parallel_tiles.h"
 #include "core/scene_framing.h"
 #include "io/command_line.h"
-#include "io/mesh_loader.h"
+#include "io/load_progress.h"
+#include "io/mesh_import.h"
 
 #include <algorithm>
 #include <array>
@@ -122,13 +123,18 @@ int run(int argc, char** argv) {
 
     BenchReport report;
     Scene scene;
-    MeshLoadReport loadReport;
-    if (!loadScene(cl.scene, scene, loadReport, error)) {
+    std::string warnings;
+    bool loaded = false;
+    {
+        LoadProgressLine progress("raylab-bench", cl.scene); // erased at the end of this block
+        loaded = loadScene(cl.scene, cl.importLimits, scene, warnings, error, progress.control());
+    }
+    if (!loaded) {
         std::cerr << "raylab-bench: " << error << "\n";
         return 1;
     }
-    if (const std::string warnings = describe(loadReport, cl.scene); !warnings.empty()) {
-        std::cerr << warnings << (warnings.back() == '\n' ? "" : "\n");
+    if (!warnings.empty()) {
+        std::cerr << warnings;
     }
     // The scene's camera and light, placed as raylab-render places them.
     if (const std::string why = finishSettings(scene, cl); !why.empty()) {

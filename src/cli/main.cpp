@@ -12,7 +12,8 @@
 #include "io/command_line.h"
 #include "io/image_io.h"
 #include "io/inspection_json.h"
-#include "io/mesh_loader.h"
+#include "io/load_progress.h"
+#include "io/mesh_import.h"
 #include "io/partial_file.h"
 #include "io/render_report.h"
 #include "io/settings_json.h"
@@ -121,13 +122,17 @@ int run(int argc, char** argv) {
     }
 
     raylab::Scene scene;
-    raylab::MeshLoadReport report;
-    if (!raylab::loadScene(cl.scene, scene, report, error)) {
+    std::string warnings;
+    bool loaded = false;
+    {
+        raylab::LoadProgressLine progress(kProgram, cl.scene); // erased at the end of this block
+        loaded = raylab::loadScene(cl.scene, cl.importLimits, scene, warnings, error,
+                                   progress.control());
+    }
+    if (!loaded) {
         return fail(1, error);
     }
-    if (const std::string warnings = raylab::describe(report, cl.scene); !warnings.empty()) {
-        std::fputs(warnings.c_str(), stderr);
-    }
+    std::fputs(warnings.c_str(), stderr);
     if (const std::string why = raylab::finishSettings(scene, cl); !why.empty()) {
         return fail(1, why);
     }

@@ -3,9 +3,15 @@
 // aiProcess_Triangulate. Assimp reaches its assertion handler through the dynamic symbol
 // Assimp::aiAssertViolation, and the header that would let us install our own handler is not
 // installed, so we define that symbol here: the executable's definition takes precedence over the
-// library's. It throws instead of aborting; Importer::ReadFile (and loadMesh) catch it and report
-// the file as unreadable.
+// library's.
+//
+// In raylab-import a failed assertion ends the helper (setAssimpAssertionHandler): its text goes
+// to the parent and nothing unwinds through Assimp's half-built structures. Without a handler
+// (the in-process tests) it throws, and loadMesh reports the file as unreadable.
 
+#include "io/assimp_assert.h"
+
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -15,18 +21,28 @@ namespace Assimp {
 // builds of Assimp itself).
 void aiAssertViolation(const char* failedExpression, const char* file, int line);
 
-void aiAssertViolation(const char* failedExpression, const char* file, int line) {
-    (void)file;
-    (void)line;
-    throw std::runtime_error(std::string("malformed file (Assimp internal check failed: ") +
-                             (failedExpression != nullptr ? failedExpression : "?") + ")");
-}
-
 } // namespace Assimp
 
 namespace raylab {
+
+namespace {
+std::atomic<AssimpAssertionHandler> handler{nullptr};
+} // namespace
+
+void setAssimpAssertionHandler(AssimpAssertionHandler h) { handler.store(h); }
 
 // Referenced by loadMesh so that the linker always takes this file out of the static library.
 bool assimpAssertionsThrow() { return true; }
 
 } // namespace raylab
+
+void Assimp::aiAssertViolation(const char* failedExpression, const char* file, int line) {
+    (void)file;
+    (void)line;
+    const std::string message = std::string("malformed file (Assimp internal check failed: ") +
+                                (failedExpression != nullptr ? failedExpression : "?") + ")";
+    if (const raylab::AssimpAssertionHandler h = raylab::handler.load(); h != nullptr) {
+        h(message.c_str()); // does not return
+    }
+    throw std::runtime_error(message);
+}

@@ -308,6 +308,21 @@ const std::vector<Option>& options() {
              }
              return {};
          }},
+        {"--import-memory-limit", "GIB", kAll,
+         "memory the mesh importer may use, in GiB (default: a quarter of RAM, 1..4)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseImportLimit(v, kMaxImportMemoryGiB, s.out.importLimits.memoryGiB)) {
+                 return expected("a number of GiB > 0 and <= 1024", v);
+             }
+             return {};
+         }},
+        {"--import-time-limit", "S", kAll, "seconds a mesh import may take (default 60)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!parseImportLimit(v, kMaxImportSeconds, s.out.importLimits.seconds)) {
+                 return expected("a number of seconds > 0 and <= 86400", v);
+             }
+             return {};
+         }},
         {"--settings", "FILE.json", kAll, "load settings saved with --save-settings (flags win)",
          nullptr}, // applied before the other options
         {"--save-settings", "FILE.json", kRender, "save the settings used, as JSON",

@@ -9,6 +9,7 @@
 #include "core/render_settings.h"
 #include "core/scene.h"
 #include "core/scene_framing.h"
+#include "io/import_limits.h"
 #include "io/settings_json.h"
 
 #include <optional>
@@ -28,6 +29,7 @@ struct CommandLine {
     bool shadowEpsilonGiven = false;
     GivenSettings given;             // the same, field by field
     std::optional<glm::vec3> lookAt; // --look-at, applied after the scene is known
+    ImportLimits importLimits;       // --import-memory-limit, --import-time-limit
 
     bool help = false;
     std::string output;                // render: -o FILE

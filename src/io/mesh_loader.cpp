@@ -3,7 +3,6 @@
 
 #include "io/mesh_loader.h"
 
-#include "core/cornell_box.h"
 #include "io/gltf_emissive_strength.h"
 #include "io/text_util.h"
 
@@ -298,16 +297,6 @@ bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std
     }
     scene = std::move(loaded);
     return true;
-}
-
-bool loadScene(const std::string& nameOrPath, Scene& scene, MeshLoadReport& report,
-               std::string& error) {
-    if (isLabBoxName(nameOrPath)) {
-        report = MeshLoadReport{};
-        scene = makeCornellBox();
-        return true;
-    }
-    return loadMesh(nameOrPath, scene, report, error);
 }
 
 std::string describe(const MeshLoadReport& report, const std::string& path) {

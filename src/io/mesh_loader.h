@@ -17,14 +17,12 @@ struct MeshLoadReport {
     bool missingMaterialLibrary = false; // e.g. an OBJ whose MTL file is missing
 };
 
-// Loads `path` into scene. Diffuse colour comes from the material (Kd / base colour), 0.75 grey
-// where there is none. Returns false with a one-line error (naming the file) when the file is
-// missing, unreadable, not a mesh, or has no valid triangle.
+// Loads `path` into scene in this process, with Assimp. Only raylab-import (src/import) and
+// tests call this; the programs read meshes through importMesh (mesh_import.h). Diffuse colour
+// comes from the material (Kd / base colour), 0.75 grey where there is none. Returns false with a
+// one-line error (naming the file) when the file is missing, unreadable, not a mesh, or has no
+// valid triangle.
 bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std::string& error);
-
-// "cornell" is the built-in lab box; anything else is a mesh path.
-bool loadScene(const std::string& nameOrPath, Scene& scene, MeshLoadReport& report,
-               std::string& error);
 
 // The report's warnings as lines ("bunny.ply: skipped 3 degenerate triangles"); empty when clean.
 std::string describe(const MeshLoadReport& report, const std::string& path);

@@ -89,7 +89,8 @@ private:
 
 // The lab's keys; empty for keys that do not navigate.
 std::optional<NavAction> navActionForKey(int glfwKey);
-// F12: screenshot, Escape: quit, F1: show or hide the panel.
+// F12: screenshot, Escape: quit (the viewer makes it cancel a running scene load first), F1:
+// show or hide the panel.
 std::optional<Command> commandForKey(int glfwKey);
 
 // The mouse drag that turns the camera: while the left button, pressed outside the panel, is

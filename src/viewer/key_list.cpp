@@ -29,7 +29,7 @@ constexpr KeyHelp kKeys[] = {
     {"F12", "save a screenshot"},
     {"F1", "show / hide the panel"},
     {"H or ?", "show / hide this list"},
-    {"Escape", "quit"},
+    {"Escape", "cancel a scene load; quit when none runs"},
 };
 
 } // namespace

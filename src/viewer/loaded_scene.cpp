@@ -1,23 +1,20 @@
 #include "loaded_scene.h"
 
-#include "io/mesh_loader.h"
-
 #include <chrono>
 #include <exception>
 
 namespace raylab::viewer {
 
-SceneLoadResult loadSceneForViewer(const std::string& source) {
+SceneLoadResult loadSceneForViewer(const std::string& source, const ImportLimits& limits,
+                                   const ImportControl& control) {
     const auto start = std::chrono::steady_clock::now();
     SceneLoadResult result;
     try {
         auto loaded = std::make_shared<LoadedScene>();
         loaded->source = source;
-        MeshLoadReport report;
-        if (!loadScene(source, loaded->scene, report, result.error)) {
+        if (!loadScene(source, limits, loaded->scene, result.warnings, result.error, control)) {
             return result;
         }
-        result.warnings = describe(report, source);
         loaded->bvh = buildBvh(loaded->scene);
         loaded->emitters = buildEmitterTable(loaded->scene);
         result.scene = std::move(loaded);

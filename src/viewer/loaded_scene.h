@@ -5,6 +5,7 @@
 #include "core/bvh/bvh.h"
 #include "core/lights/emitters.h"
 #include "core/scene.h"
+#include "io/mesh_import.h"
 
 #include <memory>
 #include <string>
@@ -25,8 +26,10 @@ struct SceneLoadResult {
     double seconds = 0.0;                     // load and BVH build, wall clock
 };
 
-// Loads `source` ("cornell" or a mesh file) and builds its BVH. Blocks; never throws for a bad
-// file (the error is in the result).
-SceneLoadResult loadSceneForViewer(const std::string& source);
+// Loads `source` ("cornell" or a mesh file, read by raylab-import under `limits`) and builds its
+// BVH. Blocks until done or cancelled (control.cancelled); never throws for a bad file (the error
+// is in the result).
+SceneLoadResult loadSceneForViewer(const std::string& source, const ImportLimits& limits = {},
+                                   const ImportControl& control = {});
 
 } // namespace raylab::viewer

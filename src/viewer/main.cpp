@@ -2,6 +2,7 @@
 // with one line and exit code 1), and runs the window (viewer_app.h).
 
 #include "io/atomic_file.h"
+#include "io/load_progress.h"
 #include "loaded_scene.h"
 #include "viewer_app.h"
 #include "viewer_options.h"
@@ -32,7 +33,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "raylab: %s\n", why.c_str());
         return 1;
     }
-    SceneLoadResult loaded = loadSceneForViewer(command.scene);
+    SceneLoadResult loaded;
+    {
+        LoadProgressLine progress("raylab", command.scene); // erased at the end of this block
+        loaded = loadSceneForViewer(command.scene, command.importLimits, progress.control());
+    }
     if (!loaded.scene) {
         std::fprintf(stderr, "raylab: %s\n", loaded.error.c_str());
         return 1;

@@ -430,13 +430,18 @@ void sceneRow(PanelState& state, const PanelView& view, PanelActions& actions) {
         ImGui::SetTooltip("a mesh file (OBJ, PLY, glTF, ...) or cornell; Return opens it");
     }
     ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::BeginDisabled(view.loading);
-    if (ImGui::Button(view.loading ? "Loading..." : "Open", ImVec2(openWidth, 0.0f)) ||
-        (enter && !view.loading)) {
+    if (ImGui::Button("Open", ImVec2(openWidth, 0.0f)) || enter) {
         actions.openScene = true;
     }
-    ImGui::EndDisabled();
     ImGui::TextWrapped("scene: %s", view.sceneName.c_str());
+    if (view.loading) {
+        if (ImGui::Button("Cancel (Esc)")) {
+            actions.cancelLoad = true;
+        }
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextWrapped("loading %s  %.1f s", view.loading->source.c_str(),
+                           view.loading->seconds);
+    }
 }
 
 } // namespace

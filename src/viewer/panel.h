@@ -11,6 +11,7 @@
 #include "io/settings_json.h"
 #include "panel_numbers.h"
 #include "pixel_readout.h"
+#include "scene_loader.h"
 
 #include <array>
 #include <cstddef>
@@ -52,10 +53,10 @@ struct PanelState {
 struct PanelView {
     std::string sceneName;
     std::size_t triangles = 0;
-    bool loading = false;     // a scene is being loaded in the background
-    float step = 0.1f;        // navigationStep of the scene: drag speeds
-    float maxEpsilon = 0.1f;  // the right end of the epsilon slider
-    bool hasEmitters = false; // the scene has emitting triangles (their scale is shown)
+    std::optional<LoadProgress> loading; // the scene load running in the background, if any
+    float step = 0.1f;                   // navigationStep of the scene: drag speeds
+    float maxEpsilon = 0.1f;             // the right end of the epsilon slider
+    bool hasEmitters = false;            // the scene has emitting triangles (their scale is shown)
     // The observer view is on (observer_view.h): the camera section shows and moves the observer.
     bool observer = false;
     // The inspected pixel's numbers (core's inspectPixel), when a pixel is inspected.
@@ -72,7 +73,8 @@ struct PanelActions {
     bool screenshot = false;
     bool frameScene = false;
     bool resetToLab = false;
-    bool openScene = false;       // load PanelState::scenePath
+    bool openScene = false;       // load PanelState::scenePath (replaces a running load)
+    bool cancelLoad = false;      // cancel the running load
     bool useMeanIndirect = false; // set the lab's N to the path-traced picture's mean N
     bool keepSnapshot = false;    // keep the current settings as snapshot A
     bool toggleObserver = false;  // the observer view on / off

@@ -278,7 +278,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     KeyRelay keys(window.handle()); // in front of ImGui's key callbacks
     // Both wake the UI thread when they have something to show (glfwPostEmptyEvent is
     // thread-safe); both are joined before the window closes.
-    SceneLoader loader([] { glfwPostEmptyEvent(); });
+    SceneLoader loader(command.importLimits, [] { glfwPostEmptyEvent(); });
     RenderWorker worker(kPreviewBudgetSeconds, [] { glfwPostEmptyEvent(); }); // last: joined first
 
     PanelState panel;
@@ -337,6 +337,13 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             job.keepLinear != submitted.keepLinear) {
             submittedSerial = worker.submit(job);
             submitted = job;
+        }
+    };
+    // Kills the running load's helper; the scene, camera, samples and settings stay.
+    const auto cancelLoad = [&] {
+        if (const auto running = loader.progress(); running && loader.cancel()) {
+            pendingRestore.reset();
+            setStatus(panel, "cancelled loading " + running->source, false);
         }
     };
     // Scripted runs draw every frame (N frames take N / 60 s); interactive ones only when wanted.
@@ -483,9 +490,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         for (const std::string& path : events.dropped) {
             if (!isScreenshotPath(path)) {
                 panel.scenePath = path;
-                if (!loader.start(path)) {
-                    setStatus(panel, "a scene is loading already", true);
-                }
+                loader.start(path); // replaces a running load
+                pendingRestore.reset();
                 continue;
             }
             RenderSettings restored;
@@ -505,15 +511,20 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 if (extras.observedLabCamera) { // the observer's picture, the lab camera kept
                     observer.observe(*extras.observedLabCamera, restored.camera, panel.settings);
                 }
-            } else if (loader.start(restoredScene)) {
+            } else {
+                loader.start(restoredScene);
                 pendingRestore = restored; // applied when the scene has loaded
                 pendingLab = extras.observedLabCamera;
                 panel.scenePath = restoredScene;
-            } else {
-                setStatus(panel, "a scene is loading already", true);
-                continue;
             }
             setStatus(panel, "restored " + path, false);
+        }
+        // Escape cancels a running load (even while the panel has the keyboard) instead of
+        // quitting.
+        if (const auto escape = std::find(events.keys.begin(), events.keys.end(), GLFW_KEY_ESCAPE);
+            escape != events.keys.end() && loader.busy()) {
+            events.keys.erase(escape);
+            cancelLoad();
         }
         applyInput(events, wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
                    dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
@@ -537,7 +548,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             PanelView view;
             view.sceneName = scene->source;
             view.triangles = scene->scene.triangles.size();
-            view.loading = loader.busy();
+            view.loading = loader.progress();
             view.step = step;
             view.maxEpsilon = maxEpsilon;
             view.numbers = &panelNumbers.shown();
@@ -567,8 +578,12 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 observer.leave(panel.settings); // the lab's defaults are the lab camera's
                 resetToLabDefaults(scene->scene, isLabBox(*scene), panel.settings);
             }
-            if (actions.openScene && !loader.start(panel.scenePath)) {
-                setStatus(panel, "a scene is loading already", true);
+            if (actions.openScene) {
+                loader.start(panel.scenePath); // replaces a running load
+                pendingRestore.reset();
+            }
+            if (actions.cancelLoad) {
+                cancelLoad();
             }
             meanIndirectWanted = meanIndirectWanted || actions.useMeanIndirect;
             observerWanted = observerWanted || actions.toggleObserver;
@@ -696,6 +711,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         if (const auto catchUp = panelSettings.catchUpAt(panel.settings); showPanel && catchUp) {
             schedule.wantAt(*catchUp);
+        }
+        // The panel counts a running load's seconds.
+        if (showPanel && loader.busy()) {
+            schedule.wantAt(now + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(kLoadClockSeconds)));
         }
         if (ImGui::GetIO().WantTextInput) {
             schedule.wantAt(now + std::chrono::duration_cast<Clock::duration>(

@@ -32,6 +32,8 @@ inline constexpr double kTextCursorSeconds = 0.1;
 // With nothing wanted, the UI thread still wakes this often (seconds) to look around; it draws
 // nothing then.
 inline constexpr double kIdleWakeSeconds = 0.5;
+// How often the panel's line of a running load ("loading FILE  3.2 s") is redrawn, in seconds.
+inline constexpr double kLoadClockSeconds = 0.1;
 
 // Opens the window and runs until it closes, Escape, or the script ends. `settings` in options
 // must be valid and already placed for the scene. Returns the process exit code (0, or 1 when the

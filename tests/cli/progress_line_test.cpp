@@ -5,6 +5,8 @@
 #include "temp_dir_test.h"
 
 #include <cerrno>
+#include <cstdlib>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <pty.h>
 #include <string>
@@ -88,6 +90,27 @@ TEST_F(ProgressLine, NotShownForAShortRender) {
     ASSERT_EQ(exitCode, 0) << shown;
     EXPECT_EQ(shown.find("rendering"), std::string::npos) << shown;
     EXPECT_NE(shown.find("raylab-render: 64x64"), std::string::npos) << shown;
+}
+
+// A mesh load that runs past 2 s says so (its helper hangs, by its test hook), the line is erased
+// at the end, and the failure is then one line of its own.
+TEST_F(ProgressLine, ALongMeshLoadSaysItRunsThenFailsInOneLine) {
+    const std::string mesh = path("t.obj");
+    std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    ::setenv("RAYLAB_IMPORT_TEST_CRASH", "hang", 1);
+    int exitCode = -1;
+    const std::string shown =
+        runOnTerminal({mesh, "--import-time-limit", "3", "-o", path("out.png")}, exitCode);
+    ::unsetenv("RAYLAB_IMPORT_TEST_CRASH");
+    EXPECT_EQ(exitCode, 1) << shown;
+    const std::size_t loading = shown.find("\rraylab-render: loading " + mesh + " (2 s)");
+    ASSERT_NE(loading, std::string::npos) << shown;
+    const std::size_t erased = shown.find("\r\033[K", loading);
+    ASSERT_NE(erased, std::string::npos) << shown;
+    const std::string error =
+        "raylab-render: cannot load mesh '" + mesh + "': took longer than 3 s";
+    EXPECT_EQ(shown.find(error), erased + 4) << shown;
+    EXPECT_EQ(files(), std::vector<std::string>{"t.obj"});
 }
 
 } // namespace

@@ -8,10 +8,13 @@
 #include "core/render/image_error.h"
 #include "core/render/renderer.h"
 #include "io/image_io.h"
+#include "io/sanitizer_build.h"
 #include "run_program.h"
 #include "temp_dir_test.h"
 #include "test_assets.h"
 
+#include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -23,6 +26,7 @@
 #include <spawn.h>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -486,6 +490,86 @@ TEST_F(RenderCli, ViewsWriteTheirRawNumbersToPfm) {
     }
     EXPECT_GT(brightest, 1.0f); // raw D, not clamped for display
     expectFailure({"--view", "heat", "-o", path("x.png")}, 2, "--view", {"d.pfm"});
+}
+
+// ---- meshes read by raylab-import ---------------------------------------------------------
+
+// Within seconds, and the whole process tree (raylab-render and its helper, the largest of the
+// children this test process has waited for) within the 1 GiB limit.
+TEST_F(RenderCli, ForgedOffHeaderFailsFastInOneLine) {
+    if (kSanitizerBuild) {
+        GTEST_SKIP() << "a sanitizer build's helper has no address-space limit (sandbox.h): the "
+                        "forged header would take about 15 GiB";
+    }
+    // 309 bytes whose header claims 353,535,235,358 vertices.
+    std::string off = "OFF\n353535235358 1 0\n";
+    off += std::string(309 - off.size(), ' ');
+    std::ofstream(path("forged.off"), std::ios::binary) << off;
+    const auto start = std::chrono::steady_clock::now();
+    expectFailure({path("forged.off"), "--import-memory-limit", "1", "-o", path("out.png")}, 1,
+                  "cannot load mesh '" + path("forged.off") + "': needed more than 1 GiB",
+                  {"forged.off"});
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+              10.0);
+    rusage children{};
+    ASSERT_EQ(::getrusage(RUSAGE_CHILDREN, &children), 0);
+    EXPECT_LT(children.ru_maxrss, 1024L * 1024L); // KiB
+}
+
+TEST_F(RenderCli, ACrashingImporterIsOneLine) {
+    std::ofstream(path("t.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    ::setenv("RAYLAB_IMPORT_TEST_CRASH", "segv", 1);
+    expectFailure({path("t.obj"), "-o", path("out.png")}, 1,
+                  "cannot load mesh '" + path("t.obj") + "': the importer crashed (SIGSEGV)",
+                  {"t.obj"});
+    ::setenv("RAYLAB_IMPORT_TEST_CRASH", "hang", 1);
+    expectFailure({path("t.obj"), "--import-time-limit", "0.3", "-o", path("out.png")}, 1,
+                  "took longer than 0.3 s", {"t.obj"});
+    ::unsetenv("RAYLAB_IMPORT_TEST_CRASH");
+}
+
+TEST_F(RenderCli, NonsenseImportLimitsAreUsageErrors) {
+    const std::string out = path("out.png");
+    for (const char* bad : {"0", "-2", "nan", "inf", "lots"}) {
+        expectFailure({"--import-memory-limit", bad, "-o", out}, 2, "--import-memory-limit");
+        expectFailure({"--import-time-limit", bad, "-o", out}, 2, "--import-time-limit");
+    }
+}
+
+// strace follows raylab-render and its children: the mesh is opened by raylab-import alone.
+TEST_F(RenderCli, TheMeshIsOpenedByTheHelperNotByRaylabRender) {
+    if (std::system("strace -V >/dev/null 2>&1") != 0) {
+        GTEST_SKIP() << "strace is not installed (scripts/install-deps.sh installs it)";
+    }
+    std::ofstream(path("t.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string trace = path("trace.txt");
+    const std::string command = "strace -f -qq -e trace=execve,openat,open -o '" + trace + "' '" +
+                                RAYLAB_RENDER_EXE + "' '" + path("t.obj") + "' --width 8 " +
+                                "--height 8 -o '" + path("t.png") + "' 2>/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    std::ifstream in(trace);
+    std::string line;
+    std::string helperPid, renderPid;
+    std::vector<std::string> openers;
+    std::string quotedObj = "\"";
+    quotedObj.append(path("t.obj")).append("\"");
+    while (std::getline(in, line)) {
+        const std::string pid = line.substr(0, line.find(' '));
+        if (line.find("execve(\"") != std::string::npos && line.find("= 0") != std::string::npos) {
+            (line.find("/raylab-import\"") != std::string::npos ? helperPid : renderPid) = pid;
+        }
+        if (line.find("open") != std::string::npos && line.find(quotedObj) != std::string::npos &&
+            line.find("execve") == std::string::npos) {
+            openers.push_back(pid);
+        }
+    }
+    ASSERT_FALSE(helperPid.empty()) << slurp(trace);
+    ASSERT_FALSE(renderPid.empty());
+    EXPECT_NE(helperPid, renderPid);
+    ASSERT_FALSE(openers.empty()) << slurp(trace);
+    for (const std::string& pid : openers) {
+        EXPECT_EQ(pid, helperPid) << slurp(trace);
+    }
 }
 
 } // namespace

@@ -21,6 +21,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from e2e_display import Display, DisplayError  # noqa: E402
+from e2e_import import test_import_cancel, test_import_failures, test_import_quit  # noqa: E402
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_observer import test_observer  # noqa: E402
@@ -321,6 +322,9 @@ TESTS = {
     "hover_readout": (test_hover_readout, True),
     "difference": (test_difference, True),
     "observer": (test_observer, True),
+    "import_failures": (test_import_failures, True),
+    "import_cancel": (test_import_cancel, True),
+    "import_quit": (test_import_quit, True),
 }
 
 
