@@ -18,6 +18,17 @@ class DisplayError(Exception):
     pass
 
 
+def end_process(proc, timeout=10):
+    """SIGTERM, then SIGKILL after `timeout` seconds; returns once the process has ended."""
+    if proc.poll() is None:
+        proc.terminate()
+        try:
+            proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+
+
 class Display:
     """Xvfb on a display of its own; DISPLAY names it while the object is entered."""
 
@@ -72,10 +83,4 @@ class Display:
 
     def stop(self):
         """Ends the server and waits for it, so its display number is free when this returns."""
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
+        end_process(self.proc)

@@ -11,6 +11,7 @@ import subprocess
 import tempfile
 import time
 
+from e2e_display import end_process
 from e2e_support import Failure, Viewer, check, distinct_colours, same_pixels, vec
 from pngread import read_png
 
@@ -44,13 +45,7 @@ class WindowManager:
             time.sleep(0.1)
 
     def stop(self):
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
+        end_process(self.proc)
         self.home.cleanup()
 
 
