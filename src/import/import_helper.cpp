@@ -26,6 +26,13 @@ namespace {
     ::_exit(kImportExitAssertion);
 }
 
+// Closes the pipe first, so that the parent sees the end of the stream before the kernel takes
+// this process's memory back.
+[[noreturn]] void endImport(int code) {
+    ::close(kResultFd);
+    ::_exit(code);
+}
+
 int sendError(const std::string& error, int code) {
     return sendToParent(encodeImportError(error)) ? code : kImportExitPipeClosed;
 }
@@ -42,16 +49,19 @@ int runImport(const std::string& path, uint64_t memoryBytes) {
     setAssimpAssertionHandler(assertionFailed);
     runTestHook();
 
+    // The reader and the scene are never destroyed: once the stream is sent, the pipe is closed
+    // (the parent starts checking the stream) and _exit ends the process without freeing them.
+    MeshReader reader;
     Scene scene;
     MeshLoadReport report;
-    if (!loadMesh(path, scene, report, error)) {
-        return sendError(error, kImportExitDone);
+    if (!reader.read(path, scene, report, error)) {
+        endImport(sendError(error, kImportExitDone));
     }
     const bool sent =
         writeImportScene(scene, report, output.lines(), [](const uint8_t* bytes, std::size_t size) {
             return sendToParent(bytes, size);
         });
-    return sent ? kImportExitDone : kImportExitPipeClosed;
+    endImport(sent ? kImportExitDone : kImportExitPipeClosed);
 }
 
 } // namespace raylab::import

@@ -7,7 +7,8 @@
 
 namespace raylab::import {
 
-// Returns the process's exit code (kImportExit*, io/import_stream.h).
+// Returns the process's exit code (kImportExit*, io/import_stream.h) when confining itself
+// failed; once the file has been read it ends the process itself (_exit, nothing freed).
 int runImport(const std::string& path, uint64_t memoryBytes);
 
 } // namespace raylab::import

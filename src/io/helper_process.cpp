@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -81,7 +82,9 @@ bool drain(int fd, std::vector<uint8_t>& data, const HelperOptions& options, boo
     for (;;) {
         if (!sized && options.expectedBytes) {
             if (const std::size_t total = options.expectedBytes(data.data(), data.size())) {
-                data.reserve(std::min(total, maxBytes));
+                // One byte more than the data: the read that finds the end of the file then
+                // needs no room of its own, which would copy the whole buffer.
+                data.reserve(std::min(total, maxBytes) + 1);
                 adviseHugePages(data.data() + data.size(), data.capacity() - data.size());
                 sized = true;
             }
@@ -104,6 +107,40 @@ bool drain(int fd, std::vector<uint8_t>& data, const HelperOptions& options, boo
         }
         return false; // 0: end of file; an error ends the reading too
     }
+}
+
+// The parent's environment with `extra` ("NAME=VALUE") on top; the strings stay in `storage`.
+std::vector<char*> environmentWith(const std::vector<std::string>& extra,
+                                   std::vector<std::string>& storage) {
+    storage.clear();
+    for (char** e = environ; *e != nullptr; ++e) {
+        const std::string entry(*e);
+        const std::string name = entry.substr(0, entry.find('='));
+        const bool replaced = std::any_of(extra.begin(), extra.end(), [&](const std::string& x) {
+            return x.compare(0, name.size() + 1, name + "=") == 0;
+        });
+        if (!replaced) {
+            storage.push_back(entry);
+        }
+    }
+    storage.insert(storage.end(), extra.begin(), extra.end());
+    std::vector<char*> pointers;
+    for (std::string& entry : storage) {
+        pointers.push_back(entry.data());
+    }
+    pointers.push_back(nullptr);
+    return pointers;
+}
+
+// Waits up to `ms` milliseconds for the child behind `pidfd` to end (its descriptor becomes
+// readable then); without a pidfd, sleeps 2 ms.
+void waitForExit(int pidfd, int ms) {
+    if (pidfd < 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        return;
+    }
+    pollfd p{pidfd, POLLIN, 0};
+    ::poll(&p, 1, ms);
 }
 
 } // namespace
@@ -131,11 +168,14 @@ HelperRun runHelper(const std::vector<std::string>& argv, const HelperOptions& o
         args.push_back(const_cast<char*>(a.c_str()));
     }
     args.push_back(nullptr);
+    std::vector<std::string> environmentStorage;
+    const std::vector<char*> environment = environmentWith(options.environment, environmentStorage);
     SpawnSetup setup;
     pid_t pid = 0;
     int rc = prepare(setup, writeEnd.fd);
     if (rc == 0) {
-        rc = ::posix_spawn(&pid, args[0], &setup.actions, &setup.attr, args.data(), environ);
+        rc = ::posix_spawn(&pid, args[0], &setup.actions, &setup.attr, args.data(),
+                           environment.data());
     }
     writeEnd.reset(); // only the child writes; its exit ends the reading
     if (rc != 0) {
@@ -173,6 +213,11 @@ HelperRun runHelper(const std::vector<std::string>& argv, const HelperOptions& o
     }
     // The pipe is closed: the helper is ending (or could close it and linger, so the deadline
     // and cancel still hold while we wait).
+    if (!killed && options.received) {
+        options.received(run.data);
+    }
+    Fd pidfd;
+    pidfd.fd = static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));
     int status = 0;
     for (;;) {
         const pid_t done = ::waitpid(pid, &status, killed ? 0 : WNOHANG);
@@ -187,7 +232,7 @@ HelperRun runHelper(const std::vector<std::string>& argv, const HelperOptions& o
                 run.cancelled = true;
                 killChild();
             } else {
-                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                waitForExit(pidfd.fd, kPollMs);
             }
         }
     }

@@ -24,16 +24,26 @@ struct HelperRun {
 };
 
 struct HelperOptions {
-    double seconds = 60.0;    // wall clock before the helper is killed
+    double seconds = 60.0; // wall clock before the helper is killed
+    // "NAME=VALUE" entries for the helper's environment, on top of the parent's (an entry
+    // replaces the parent's variable of the same name).
+    std::vector<std::string> environment;
     std::size_t maxBytes = 0; // more than this on descriptor 3 kills the helper
     // Given what has arrived, the total the helper will send when its header says so, else 0;
     // the buffer then takes that room at once (at most maxBytes). May be empty.
     std::function<std::size_t(const uint8_t* data, std::size_t size)> expectedBytes;
     std::function<bool()> cancelled;             // polled about every 20 ms; may be empty
     std::function<void(double seconds)> running; // likewise; the time since the spawn
+    // Called once with everything the helper sent, as soon as it has closed its end and before
+    // the wait for its exit, so that the caller's work on the data overlaps the helper's ending.
+    // Not called when the helper was killed while writing (over the cap, the time limit,
+    // cancelled); it may still be killed or crash afterwards, so what the data means is decided
+    // only from the HelperRun that runHelper returns. May be empty.
+    std::function<void(const std::vector<uint8_t>& data)> received;
 };
 
-// Spawns `argv[0]` with `argv` (posix_spawn; the environment is inherited) and waits for it.
+// Spawns `argv[0]` with `argv` (posix_spawn; the parent's environment with
+// options.environment on top) and waits for it.
 // Never leaves a child behind: whatever happens, the helper has been waited for on return.
 HelperRun runHelper(const std::vector<std::string>& argv, const HelperOptions& options);
 

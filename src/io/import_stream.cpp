@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
 
 namespace raylab {
 
@@ -25,6 +27,13 @@ static_assert(std::endian::native == std::endian::little,
 constexpr std::size_t kHeaderBytes = sizeof kMagic + 4 + 8 + 1;
 constexpr std::size_t kReportBytes = 4 * 8 + 1;
 constexpr std::size_t kSinkPiece = std::size_t{1} << 20;
+
+// A Triangle's bytes are the stream's triangle record (nine floats, then the material), so the
+// triangles are written and read as one block.
+static_assert(sizeof(Triangle) == kImportTriangleBytes && offsetof(Triangle, v0) == 0 &&
+                  offsetof(Triangle, v1) == 12 && offsetof(Triangle, v2) == 24 &&
+                  offsetof(Triangle, material) == 36 && std::is_trivially_copyable_v<Triangle>,
+              "Triangle must be laid out as the import stream's triangle record");
 
 // Gathers what is written into pieces of kSinkPiece bytes for the sink; after the sink failed,
 // writes nothing more.
@@ -50,13 +59,17 @@ public:
         const float f[3] = {v.x, v.y, v.z};
         bytes(f, sizeof f);
     }
-    // One triangle's kImportTriangleBytes in a single copy.
-    void triangle(const Triangle& t) {
-        uint8_t packed[kImportTriangleBytes];
-        const float f[9] = {t.v0.x, t.v0.y, t.v0.z, t.v1.x, t.v1.y, t.v1.z, t.v2.x, t.v2.y, t.v2.z};
-        std::memcpy(packed, f, sizeof f);
-        std::memcpy(packed + sizeof f, &t.material, sizeof t.material);
-        bytes(packed, sizeof packed);
+    // Hands `n` bytes to the sink from where they are, after what is gathered, in pieces of at
+    // most kSinkPiece bytes: the triangles go out without a copy.
+    void direct(const void* data, std::size_t n) {
+        flush();
+        const auto* p = static_cast<const uint8_t*>(data);
+        while (ok_ && n > 0) {
+            const std::size_t take = std::min(n, kSinkPiece);
+            ok_ = sink_(p, take);
+            p += take;
+            n -= take;
+        }
     }
     void text(const std::string& s) {
         const std::string line = sanitisedLine(s);
@@ -118,6 +131,16 @@ public:
     bool u8(uint8_t& v) { return bytes(&v, sizeof v); }
     bool u32(uint32_t& v) { return bytes(&v, sizeof v); }
     bool u64(uint64_t& v) { return bytes(&v, sizeof v); }
+    // The next `n` bytes where they are, or null when fewer remain.
+    const uint8_t* take(std::size_t n) {
+        if (n > left_) {
+            return nullptr;
+        }
+        const uint8_t* at = p_;
+        p_ += n;
+        left_ -= n;
+        return at;
+    }
     bool vec3(glm::vec3& v) {
         float f[3];
         if (!bytes(f, sizeof f)) {
@@ -213,11 +236,10 @@ bool readScene(Reader& r, ImportOutcome& out, std::string& problem) {
     out.scene.triangles.reserve(triangles);
     adviseHugePages(out.scene.triangles.data(), triangles * sizeof(Triangle));
     out.scene.triangles.resize(triangles);
+    const uint8_t* record = r.take(triangles * kImportTriangleBytes); // the size was checked above
     for (Triangle& t : out.scene.triangles) {
-        r.vec3(t.v0); // the sizes were checked above
-        r.vec3(t.v1);
-        r.vec3(t.v2);
-        r.u32(t.material);
+        std::memcpy(&t, record, kImportTriangleBytes);
+        record += kImportTriangleBytes;
         if (t.material >= materials) {
             problem = "a material index out of range";
             return false;
@@ -272,9 +294,7 @@ bool writeImportScene(const Scene& scene, const MeshLoadReport& report,
         w.vec3(m.emission);
     }
     w.u64(scene.triangles.size());
-    for (const Triangle& t : scene.triangles) {
-        w.triangle(t);
-    }
+    w.direct(scene.triangles.data(), scene.triangles.size() * kImportTriangleBytes);
     w.bytes(kEnd, sizeof kEnd);
     return w.finish();
 }

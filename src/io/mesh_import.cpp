@@ -16,6 +16,16 @@ namespace raylab {
 
 namespace {
 
+// The helper's allocator (glibc's tunables, read when the helper starts): transparent huge pages
+// for its heap, and neither mmap for blocks under 256 MiB nor giving memory back, in steps of
+// 64 MiB. Assimp's readers make many allocations, some of a megabyte and more, freed and made
+// again; in a process that lives for one file and ends without freeing, these settings cut the
+// page faults that otherwise take a large share of a load (PERFORMANCE.md, "Importing meshes").
+// The memory limit still holds: it bounds the address space.
+constexpr const char* kImportAllocatorTunables =
+    "GLIBC_TUNABLES=glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=268435456:"
+    "glibc.malloc.trim_threshold=268435456:glibc.malloc.top_pad=67108864";
+
 // "4", "0.5": a limit as the user would have typed it.
 std::string number(double value) {
     char text[32];
@@ -76,19 +86,25 @@ bool importMesh(const std::string& path, const ImportLimits& limits, Scene& scen
     options.expectedBytes = declaredImportStreamBytes;
     options.cancelled = control.cancelled;
     options.running = control.running;
+    options.environment = {kImportAllocatorTunables};
+    // The stream is checked while the helper ends; what it says counts only if the run went well.
+    ImportOutcome outcome;
+    bool parsed = false;
+    std::string problem;
+    options.received = [&](const std::vector<uint8_t>& data) {
+        parsed = parseImportStream(data.data(), data.size(), outcome, problem);
+    };
     const HelperRun run = runHelper(
         {helper, "--memory-limit-bytes", std::to_string(memoryBytes), "--", path}, options);
-    if (const std::string problem = runProblem(run, limits, memoryGiB); !problem.empty()) {
-        error = prefix + problem;
+    if (const std::string runError = runProblem(run, limits, memoryGiB); !runError.empty()) {
+        error = prefix + runError;
         return false;
     }
     if (run.data.empty() && run.exitCode != 0) {
         error = prefix + "the importer failed (exit code " + std::to_string(run.exitCode) + ")";
         return false;
     }
-    ImportOutcome outcome;
-    std::string problem;
-    if (!parseImportStream(run.data.data(), run.data.size(), outcome, problem)) {
+    if (!parsed) {
         error = prefix + problem +
                 (run.exitCode != 0
                      ? " (the importer exited with code " + std::to_string(run.exitCode) + ")"

@@ -161,7 +161,17 @@ std::string describeCounts(const MeshLoadReport& report) {
 
 } // namespace
 
+MeshReader::MeshReader() : importer_(std::make_unique<Assimp::Importer>()) {}
+
+MeshReader::~MeshReader() = default;
+
 bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std::string& error) {
+    MeshReader reader;
+    return reader.read(path, scene, report, error);
+}
+
+bool MeshReader::read(const std::string& path, Scene& scene, MeshLoadReport& report,
+                      std::string& error) {
     report = MeshLoadReport{};
     const std::string quoted = "'" + path + "'";
 
@@ -214,7 +224,8 @@ bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std
         error = "cannot load mesh " + quoted + ": internal error";
         return false;
     }
-    Assimp::Importer importer;
+    importer_->FreeScene();
+    Assimp::Importer& importer = *importer_;
     // Validation first (it rejects indices out of range before any other step reads them), then
     // polygons to triangles and node transforms baked in. Lines and points stay so we can count
     // them. No aiProcess_JoinIdenticalVertices: the scene stores three vertices per triangle

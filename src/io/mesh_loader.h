@@ -4,7 +4,12 @@
 #include "core/scene.h"
 
 #include <cstddef>
+#include <memory>
 #include <string>
+
+namespace Assimp {
+class Importer;
+}
 
 namespace raylab {
 
@@ -23,6 +28,24 @@ struct MeshLoadReport {
 // one-line error (naming the file) when the file is missing, unreadable, not a mesh, or has no
 // valid triangle.
 bool loadMesh(const std::string& path, Scene& scene, MeshLoadReport& report, std::string& error);
+
+// loadMesh with a lifetime of its own for what Assimp built: Assimp's scene of the last read
+// stays in memory until the reader reads again or is destroyed. raylab-import sends the
+// triangles and then ends with _exit, so that the kernel takes Assimp's scene back at once
+// instead of it being freed allocation by allocation (one per face) while the parent waits.
+class MeshReader {
+public:
+    MeshReader();
+    ~MeshReader();
+    MeshReader(const MeshReader&) = delete;
+    MeshReader& operator=(const MeshReader&) = delete;
+
+    // As loadMesh.
+    bool read(const std::string& path, Scene& scene, MeshLoadReport& report, std::string& error);
+
+private:
+    std::unique_ptr<Assimp::Importer> importer_;
+};
 
 // The report's warnings as lines ("bunny.ply: skipped 3 degenerate triangles"); empty when clean.
 std::string describe(const MeshLoadReport& report, const std::string& path);
