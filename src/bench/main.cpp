@@ -23,6 +23,7 @@
 #include "core/camera.h"
 #include "core/integrators/lab_shading.h"
 #include "core/render/parallel_tiles.h"
+#include "core/render/renderer.h"
 #include "core/scene_framing.h"
 #include "io/command_line.h"
 #include "io/load_progress.h"
@@ -344,6 +345,8 @@ int run(int argc, char** argv) {
         RenderSettings lab = cl.settings;
         lab.integrator = Integrator::Lab;
         report.labPasses = measurePasses(scene, bvh, lab, threads, frames);
+        report.labPassesOfMany =
+            measurePasses(scene, bvh, lab, threads, frames, static_cast<uint32_t>(kSamplesPerPass));
         RenderSettings path = cl.settings;
         path.integrator = Integrator::Path;
         report.pathPasses = measurePasses(scene, bvh, path, threads, frames);
