@@ -72,7 +72,8 @@ TEST(HelperProcess, ASignalEndsTheRunAndIsReported) {
 TEST(HelperProcess, AHelperOverTheCapIsKilled) {
     HelperOptions options;
     options.maxBytes = 1000;
-    const HelperRun run = runHelper({"/bin/sh", "-c", "head -c 5000 /dev/zero >&3"}, options);
+    // It writes until stopped, so it is still there to be killed.
+    const HelperRun run = runHelper({"/bin/sh", "-c", "exec cat /dev/zero >&3"}, options);
     EXPECT_TRUE(run.overCap);
     EXPECT_EQ(run.signal, SIGKILL);
 }

@@ -67,6 +67,10 @@ RAYLAB_AVX2 void samplePoints8(int x0, int y, uint32_t sampleIndex, uint32_t row
 // Writes lanes [0, count) of `radiance` to the film's pixels row .. row + count - 1.
 inline void write(const RadiancePacket& radiance, int count, Film::Write how, std::size_t row,
                   Film& film) {
+    if (how == Film::Write::Later && count == kPacketSize) {
+        film.addEight(row, radiance.value[0], radiance.value[1], radiance.value[2]);
+        return;
+    }
     for (int i = 0; i < count; ++i) {
         film.write(row + static_cast<std::size_t>(i),
                    glm::vec3(radiance.value[0][i], radiance.value[1][i], radiance.value[2][i]),

@@ -1,5 +1,7 @@
 #include "render/film.h"
 
+#include "render/exact_sum_simd.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -55,6 +57,10 @@ glm::vec3 Film::meanWith(std::size_t i, uint32_t samples) const {
         return glm::vec3(asStored(r.x), asStored(r.y), asStored(r.z));
     }
     return meanOf(sums_[i], samples);
+}
+
+void Film::addEight(std::size_t i, const float* r, const float* g, const float* b) {
+    addSamples8(&sums_[i], r, g, b);
 }
 
 PixelSum Film::sumOf(std::size_t i) const {

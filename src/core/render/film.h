@@ -141,6 +141,9 @@ public:
         case Write::Later: sums_[i].add(r); break;
         }
     }
+    // write(i + k, (r[k], g[k], b[k]), Write::Later) for k < 8: eight neighbouring pixels of a
+    // row at once (exact_sum_simd.h), the same sums.
+    void addEight(std::size_t i, const float* r, const float* g, const float* b);
     // The exact sum of pixel i's samples.
     PixelSum sumOf(std::size_t i) const;
     // Makes the film hold the samples [first, next) whose exact sums are `sums` (pixelCount()
