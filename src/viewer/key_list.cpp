@@ -36,10 +36,8 @@ constexpr KeyHelp kKeys[] = {
 
 std::span<const KeyHelp> keyList() { return kKeys; }
 
-void drawKeyList() {
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.5f * io.DisplaySize.y),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+void drawKeyList(float x, float y) {
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Keys and mouse (H)", nullptr,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoCollapse);
