@@ -2,14 +2,17 @@
 (src/viewer/panel_cache.h): the window (--readback) is the panel's column at the left and, right
 of it, raylab-render's picture of the same scene and size, pixel for pixel: the panel covers
 nothing. Hovering the panel's button shows at once; F1 hides the panel and the picture then fills
-the whole window; at UI scale 2 the column is twice as wide and the picture still whole; dragging
+the whole window; at UI scale 2 (--ui-scale, or the monitor's content scale) the column is twice
+as wide and the picture still whole; dragging
 the column's edge gives the picture what the panel gives up; a dropped screenshot restores its
 picture's size beside the panel."""
 
 import json
+import shutil
+import subprocess
 import time
 
-from e2e_support import PANEL_BUTTON, PANEL_COLUMN, Viewer, check, same_pixels
+from e2e_support import PANEL_BUTTON, PANEL_COLUMN, Failure, Viewer, check, same_pixels
 from pngread import read_png
 
 WIDTH, HEIGHT = 480, 360
@@ -102,10 +105,23 @@ def test_panel(env):
                 "the picture filling the window vs raylab-render")
 
 
+def set_content_scale(scale):
+    """Gives this test's X server the content scale `scale`, as a desktop does: Xft.dpi =
+    96 * scale in the root window's resources, which GLFW reads when it starts."""
+    if shutil.which("xprop") is None:
+        raise Failure("xprop is not installed: run scripts/install-deps.sh (x11-utils)")
+    result = subprocess.run(["xprop", "-root", "-f", "RESOURCE_MANAGER", "8s", "-set",
+                             "RESOURCE_MANAGER", f"Xft.dpi:\t{round(96 * scale)}\n"],
+                            capture_output=True, text=True, timeout=30)
+    check(result.returncode == 0, f"xprop could not set Xft.dpi: {result.stderr.strip()}")
+
+
 def test_panel_scale(env):
     """--ui-scale 2 (Xvfb's own content scale is 1): the panel's column is twice as wide, its
     widgets twice as large (the screenshot button's background where scale 1 has it, doubled),
-    and the picture beside it is still raylab-render's, whole; a refused scale is one line."""
+    and the picture beside it is still raylab-render's, whole. Then a monitor of content scale 2
+    (Xft.dpi 192) without --ui-scale: the panel scales the same, and the window opens at twice
+    the size asked for (GLFW's scaling to the monitor), the picture beside the panel whole."""
     flags = SIZE + ["--spp", "2"]
     expected = render(env, "expected.png", flags)
     env.run_ok(env.raylab, flags + ["--frames", "5", "--readback", "one.png"])
@@ -121,6 +137,15 @@ def test_panel_scale(env):
               f"button's {button} (the button is not twice as large)")
     check(one.pixel(x, 2 * y + 14)[:3] != button,
           "at UI scale 1 the button reaches as low as at scale 2")
+
+    set_content_scale(2)
+    env.run_ok(env.raylab, flags + ["--frames", "5", "--readback", "monitor.png"])
+    monitor = read_png(env.path("monitor.png"))
+    check_beside(monitor, render(env, "double.png", ["--width", str(2 * WIDTH), "--height",
+                                                     str(2 * HEIGHT), "--spp", "2"]),
+                 2 * PANEL_COLUMN, "on a monitor of content scale 2")
+    check(monitor.pixel(2 * x, 2 * y)[:3] == button,
+          "on a monitor of content scale 2 the screenshot button is not twice as large")
 
 
 def test_panel_edge(env):
