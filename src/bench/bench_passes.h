@@ -7,6 +7,8 @@
 #include "core/render_settings.h"
 #include "core/scene.h"
 
+#include <cstdint>
+
 namespace raylab::bench {
 
 struct PassFigures {
@@ -14,8 +16,10 @@ struct PassFigures {
     double allThreads = 0.0; // likewise
 };
 
-// `settings` gives the camera, light and image size; its integrator is the one measured.
+// `settings` gives the camera, light and image size; its integrator is the one measured. Each
+// timed pass writes `samplesPerPass` samples of every pixel (PassOptions::samples): 1 as the
+// viewer renders, kSamplesPerPass as raylab-render does.
 PassFigures measurePasses(const Scene& scene, const Bvh& bvh, RenderSettings settings, int threads,
-                          int frames);
+                          int frames, uint32_t samplesPerPass = 1);
 
 } // namespace raylab::bench

@@ -1,5 +1,7 @@
 #include "bench_report.h"
 
+#include "core/render/renderer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -222,6 +224,9 @@ void printText(std::ostream& out, const BenchReport& r) {
             << format("%.2f", r.labPasses.allThreads) << "; path integrator "
             << format("%.2f", r.pathPasses.oneThread) << ", "
             << format("%.2f", r.pathPasses.allThreads) << "\n";
+        out << "  lab integrator in passes of " << kSamplesPerPass
+            << " samples (raylab-render's): " << format("%.2f", r.labPassesOfMany.oneThread) << ", "
+            << format("%.2f", r.labPassesOfMany.allThreads) << "\n";
     }
     if (!r.hasEmbree) {
         return;
@@ -290,6 +295,8 @@ void printJson(std::ostream& out, const BenchReport& r) {
         };
         out << ",\n \"passes\": {\"lab\": ";
         passJson(r.labPasses);
+        out << ", \"lab_passes_of_" << kSamplesPerPass << "\": ";
+        passJson(r.labPassesOfMany);
         out << ", \"path\": ";
         passJson(r.pathPasses);
         out << "}";

@@ -73,7 +73,8 @@ struct BenchReport {
     std::array<TracerFigures, kEmbreeCalls> bounceEmbree;
     // The renderer's passes (bench_passes.h), M pixel samples per second, unless --no-passes.
     bool passes = false;
-    PassFigures labPasses, pathPasses;
+    PassFigures labPasses, pathPasses; // 1 sample a pass, as the viewer renders
+    PassFigures labPassesOfMany;       // kSamplesPerPass samples a pass, as raylab-render does
 };
 
 // The fastest Embree call on 1 thread (one = true) or on all threads.

@@ -17,7 +17,7 @@ namespace raylab::bench {
 
 struct EmbreeOptions {
     std::string isa; // empty: Embree's own choice (its widest kernels); else one isEmbreeIsa
-                     // (bench_flags.h) accepts
+                     // (io/command_line.h, isEmbreeIsa) accepts
     int threads = 1; // Embree's build threads ("threads=" configuration), as raylab's build
     int builds = 3;  // the build time is the best of this many builds (at least 1)
 };

@@ -9,12 +9,11 @@
 // raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and, in the same turns, 8 x 8
 // pixel blocks through frustum candidates as the renderer does (core/bvh_frustum.h,
 // bench_blocks.h) and single rays; bounce rays one by one in every case. Bench-only flags:
-// bench_flags.h. Exit codes: 2 usage, 1 other errors, too many hits disagreeing with Embree, or
-// packets, blocks and single rays not giving identical answers.
+// BenchOptions in io/command_line.h. Exit codes: 2 usage, 1 other errors, too many hits disagreeing
+// with Embree, or packets, blocks and single rays not giving identical answers.
 
 #include "bench_blocks.h"
 #include "bench_checks.h"
-#include "bench_flags.h"
 #include "bench_rays.h"
 #include "bench_report.h"
 #include "bench_timing.h"
@@ -23,6 +22,7 @@
 #include "core/camera.h"
 #include "core/integrators/lab_shading.h"
 #include "core/render/parallel_tiles.h"
+#include "core/render/renderer.h"
 #include "core/scene_framing.h"
 #include "io/command_line.h"
 #include "io/load_progress.h"
@@ -45,9 +45,6 @@ namespace {
 
 using namespace raylab;
 using namespace raylab::bench;
-
-constexpr int kBenchWidth = 1280;
-constexpr int kBenchHeight = 720;
 
 // One tracer's part of a frame: `prepare` (untimed; may be empty), then every tile (timed).
 struct Turn {
@@ -92,34 +89,19 @@ bool tooManyDisagree(std::size_t disagreeing, std::size_t rays, const char* what
 }
 
 int run(int argc, char** argv) {
-    std::vector<const char*> args(argv, argv + argc);
-    BenchFlags flags;
     std::string error;
-    if (!takeBenchFlags(args, flags, error)) {
-        std::cerr << "raylab-bench: " << error << "\n";
-        return 2;
-    }
     CommandLine cl;
-    if (!flags.sizeGiven) {
-        cl.settings.width = kBenchWidth;
-        cl.settings.height = kBenchHeight;
-    }
-    const int parsed =
-        parseCommandLine(static_cast<int>(args.size()), args.data(), Program::Bench, cl, error);
+    const int parsed = parseCommandLine(argc, argv, Program::Bench, cl, error);
     if (parsed != 0) {
         std::cerr << "raylab-bench: " << error << "\n";
         return parsed;
     }
     if (cl.help) {
-        std::cout << usage(Program::Bench)
-                  << "\nraylab-bench traces 1280x720 unless --width or --height is given.\n"
-                  << benchFlagsHelp();
+        std::cout << usage(Program::Bench);
         return 0;
     }
-    if (!flags.sizeGiven) {
-        cl.settings.width = kBenchWidth;
-        cl.settings.height = kBenchHeight;
-    }
+    const BenchOptions& flags = cl.bench;
+    const Workload workload = flags.bounceWorkload ? Workload::Bounce : Workload::Primary;
 
     BenchReport report;
     Scene scene;
@@ -144,7 +126,7 @@ int run(int argc, char** argv) {
     const int threads = resolveThreadCount(cl.settings.threads);
     const int frames = std::max(1, cl.benchFrames);
     report.scene = cl.scene;
-    report.workload = flags.workload;
+    report.workload = workload;
     report.triangles = scene.triangles.size();
     report.width = cl.settings.width;
     report.height = cl.settings.height;
@@ -190,7 +172,7 @@ int run(int argc, char** argv) {
     };
     timeFrames(rays, threads, 1, primaryOnly);
     addShadowRays(rays, hits, scene, cl.settings);
-    if (flags.workload == Workload::Bounce) {
+    if (workload == Workload::Bounce) {
         addBounceRays(rays, hits, scene, cl.settings.shadowEpsilon);
     }
     std::vector<uint8_t> occluded(rays.shadow.size(), 0);
@@ -309,7 +291,7 @@ int run(int argc, char** argv) {
 #endif
     timeInTurns(rays, 1, frames, turns, &TracerFigures::one);
     timeInTurns(rays, threads, frames, turns, &TracerFigures::all);
-    if (flags.workload == Workload::Bounce) {
+    if (workload == Workload::Bounce) {
         timeInTurns(rays, 1, frames, bounceTurns, &TracerFigures::one);
         timeInTurns(rays, threads, frames, bounceTurns, &TracerFigures::all);
     }
@@ -344,6 +326,8 @@ int run(int argc, char** argv) {
         RenderSettings lab = cl.settings;
         lab.integrator = Integrator::Lab;
         report.labPasses = measurePasses(scene, bvh, lab, threads, frames);
+        report.labPassesOfMany =
+            measurePasses(scene, bvh, lab, threads, frames, static_cast<uint32_t>(kSamplesPerPass));
         RenderSettings path = cl.settings;
         path.integrator = Integrator::Path;
         report.pathPasses = measurePasses(scene, bvh, path, threads, frames);

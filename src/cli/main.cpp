@@ -19,6 +19,7 @@
 #include "io/settings_json.h"
 #include "io/text_util.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -88,6 +89,19 @@ bool readReference(const std::string& path, raylab::Framebuffer& image, std::str
     }
     error = "reference '" + path + "': unsupported format (use .pfm or .exr)";
     return false;
+}
+
+// After `done` samples, the next count at which the error is measured (--reference: powers of
+// two) or estimated (--target-error: powers of two and multiples of 64).
+int nextCheck(int done) {
+    if (done >= 64) {
+        return (done / 64 + 1) * 64;
+    }
+    int next = 1;
+    while (next <= done) {
+        next *= 2;
+    }
+    return next;
 }
 
 int run(int argc, char** argv) {
@@ -198,12 +212,19 @@ int run(int argc, char** argv) {
         raylab::PassOptions passOptions;
         passOptions.emitters = &emitters;
         const int samples = settings.samplesPerPixel - static_cast<int>(cl.firstSample);
-        for (int sample = 0; sample < samples; ++sample) {
-            passOptions.progress = [&progress, sample, samples](double fraction) {
-                progress.update((sample + fraction) / samples);
+        const bool checks = !reference.pixels.empty() || cl.targetError > 0.0f;
+        for (int done = 0; done < samples;) {
+            // Passes of several samples (PassOptions::samples), ending where a check is due.
+            int now = std::min(raylab::kSamplesPerPass, samples - done);
+            if (checks) {
+                now = std::min(now, nextCheck(done) - done);
+            }
+            passOptions.samples = static_cast<uint32_t>(now);
+            passOptions.progress = [&progress, done, now, samples](double fraction) {
+                progress.update((done + fraction * now) / samples);
             };
             raylab::renderPass(scene, bvh, settings, film, &counts, passOptions);
-            const int done = sample + 1;
+            done += now;
             if (!reference.pixels.empty() && ((done & (done - 1)) == 0 || done == samples)) {
                 const auto measureStart = Clock::now();
                 const double seconds =

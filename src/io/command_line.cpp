@@ -71,6 +71,24 @@ Handler intIn(int lo, int hi, int CommandLine::*field) {
     };
 }
 
+Handler benchSwitch(bool BenchOptions::*field) {
+    return [=](const std::string&, ParseState& s) -> std::string {
+        s.out.bench.*field = true;
+        return {};
+    };
+}
+
+Handler benchFraction(float BenchOptions::*field) {
+    return [=](const std::string& value, ParseState& s) -> std::string {
+        float v = 0.0f;
+        if (!parseFloat(value, v) || !(v >= 0.0f)) {
+            return "expected a fraction >= 0, got " + quoted(value);
+        }
+        s.out.bench.*field = v;
+        return {};
+    };
+}
+
 Handler settingsIntIn(int lo, int hi, int RenderSettings::*field) {
     return [=](const std::string& value, ParseState& s) -> std::string {
         int v = 0;
@@ -488,6 +506,39 @@ const std::vector<Option>& options() {
              s.out.json = true;
              return {};
          }},
+        {"--workload", "primary|bounce", kBench,
+         "primary: a camera ray per pixel and a shadow ray per lit hit (default); bounce: also "
+         "a diffuse bounce ray per hit",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (v != "primary" && v != "bounce") {
+                 return expected("primary or bounce", v);
+             }
+             s.out.bench.bounceWorkload = v == "bounce";
+             return {};
+         }},
+        {"--scalar", nullptr, kBench, "raylab's scalar reference traversal (binary BVH)",
+         benchSwitch(&BenchOptions::scalar)},
+        {"--no-packets", nullptr, kBench, "single rays only (no 8-ray packets, no blocks)",
+         benchSwitch(&BenchOptions::noPackets)},
+        {"--no-blocks", nullptr, kBench, "no 8x8 pixel blocks through frustum candidates",
+         benchSwitch(&BenchOptions::noBlocks)},
+        {"--no-passes", nullptr, kBench, "no renderer passes (lab and path integrators' samples/s)",
+         benchSwitch(&BenchOptions::noPasses)},
+        {"--spatial-budget", "F", kBench, "BVH spatial splits: extra references, fraction >= 0",
+         benchFraction(&BenchOptions::spatialBudget)},
+        {"--presplit-budget", "F", kBench, "BVH pre-splitting: extra references, fraction >= 0",
+         benchFraction(&BenchOptions::presplitBudget)},
+        {"--embree-isa", "NAME", kBench,
+         "Embree's instruction set: sse2, sse4.2, avx or avx2 (default: Embree's own choice, its "
+         "widest)",
+         [](const std::string& v, ParseState& s) -> std::string {
+             if (!isEmbreeIsa(v)) {
+                 return expected("sse2, sse4.2, avx or avx2", v);
+             }
+             s.out.bench.embreeIsa = v;
+             return {};
+         }},
+        {"--no-embree", nullptr, kBench, "skip Embree", benchSwitch(&BenchOptions::noEmbree)},
         {"--help", nullptr, kAll, "show this help", nullptr},
     };
     return table;
@@ -622,6 +673,14 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         }
     }
 
+    if (program == Program::Bench && std::none_of(words.begin(), words.end(), [](const Word& w) {
+            return std::string(w.option->name) == "--width" ||
+                   std::string(w.option->name) == "--height";
+        })) {
+        result.settings.width = kBenchWidth;
+        result.settings.height = kBenchHeight;
+    }
+
     // Pass 2: every other option, in order.
     // Each value is checked where it is given (so the error names the flag), then the whole set
     // with core validate() after each option, which catches the limits the flags do not repeat.
@@ -694,6 +753,10 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
     return 0;
 }
 
+bool isEmbreeIsa(const std::string& isa) {
+    return isa == "sse2" || isa == "sse4.2" || isa == "avx" || isa == "avx2";
+}
+
 std::string usage(Program program) {
     std::ostringstream text;
     text << "usage: " << programName(program) << " [SCENE] [options]";
@@ -716,7 +779,10 @@ std::string usage(Program program) {
         left.resize(std::max<std::size_t>(left.size() + 2, 26), ' ');
         text << left << option.help << "\n";
     }
-    if (program != Program::Bench) {
+    if (program == Program::Bench) {
+        text << "\nraylab-bench traces " << kBenchWidth << "x" << kBenchHeight
+             << " unless --width or --height is given.\n";
+    } else {
         text << "\nthe lab's steps (--preset NAME):\n";
         for (const LabPreset& preset : labPresets()) {
             text << "  " << preset.name << ": " << preset.shows << "; " << preset.equation << "\n";

@@ -20,6 +20,28 @@ namespace raylab {
 
 enum class Program { Render, Viewer, Bench };
 
+// raylab-bench's picture unless --width or --height is given (a settings file's size does not
+// count: the bench's figures compare at one size).
+inline constexpr int kBenchWidth = 1280;
+inline constexpr int kBenchHeight = 720;
+
+// raylab-bench's own options.
+struct BenchOptions {
+    bool bounceWorkload = false;  // --workload bounce (default primary)
+    bool scalar = false;          // --scalar: raylab's scalar reference traversal
+    bool noEmbree = false;        // --no-embree
+    bool noPackets = false;       // --no-packets: raylab's single rays only
+    bool noBlocks = false;        // --no-blocks
+    bool noPasses = false;        // --no-passes: no renderer passes
+    float spatialBudget = -1.0f;  // --spatial-budget F; < 0: BvhBuildOptions' default
+    float presplitBudget = -1.0f; // --presplit-budget F; likewise
+    std::string embreeIsa;        // --embree-isa NAME; empty: Embree's own choice
+};
+
+// The instruction sets --embree-isa accepts, as Embree's "isa=" device configuration names them.
+// Embree itself reads an unknown name as SSE2, so the bench refuses one instead.
+bool isEmbreeIsa(const std::string& isa);
+
 struct CommandLine {
     std::string scene{kLabBoxName};
     RenderSettings settings;
@@ -64,6 +86,7 @@ struct CommandLine {
     // bench
     bool json = false;   // --json
     int benchFrames = 5; // --frames N for the bench: best of N
+    BenchOptions bench;
 };
 
 // Returns 0 on success; 2 with a one-line `error` for usage errors (unknown flag, missing or

@@ -3,6 +3,7 @@
 #include "core/camera.h"
 #include "core/lab_presets.h"
 #include "core/render/false_colour.h"
+#include "panel_browser.h"
 #include "render_worker.h"
 #include "settings_edit.h"
 #include "split_view.h"
@@ -437,7 +438,25 @@ void sceneRow(PanelState& state, const PanelView& view, PanelActions& actions) {
     if (ImGui::Button("Open", ImVec2(openWidth, 0.0f)) || enter) {
         actions.openScene = true;
     }
+    if (ImGui::Button(state.browsing ? "Close browser" : "Browse...")) {
+        state.browsing = !state.browsing;
+        if (state.browsing && !state.browser.open(FileBrowser::startFolder(state.scenePath))) {
+            state.browser.open(FileBrowser::startFolder(""));
+        }
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("pick a mesh file from a list of folders and mesh files");
+    }
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::TextWrapped("scene: %s", view.sceneName.c_str());
+    if (state.browsing) {
+        std::string chosen;
+        if (drawFileBrowser(state.browser, chosen)) {
+            state.scenePath = chosen;
+            state.browsing = false;
+            actions.openScene = true;
+        }
+    }
     if (view.loading) {
         if (ImGui::Button("Cancel (Esc)")) {
             actions.cancelLoad = true;

@@ -9,6 +9,7 @@
 #include "core/integrators/pixel_inspection.h"
 #include "core/render_settings.h"
 #include "difference_view.h"
+#include "file_browser.h"
 #include "inspected_pixel.h"
 #include "io/settings_json.h"
 #include "panel_numbers.h"
@@ -43,8 +44,10 @@ struct PanelState {
     // The pixel looked inside (Ctrl+click); its numbers are PanelView's.
     std::optional<InspectedPixel> inspected;
     std::string scenePath; // the path field
-    std::string refused;   // why the last edit was refused; empty when it was not
-    std::string status;    // the last screenshot or scene-load message
+    bool browsing = false; // the file browser is open below the path field ("Browse")
+    FileBrowser browser;
+    std::string refused; // why the last edit was refused; empty when it was not
+    std::string status;  // the last screenshot or scene-load message
     bool statusIsError = false;
 };
 

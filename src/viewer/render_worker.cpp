@@ -1,5 +1,7 @@
 #include "render_worker.h"
 
+#include "pass_size.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -152,7 +154,7 @@ void RenderWorker::run() {
     std::vector<uint8_t> sideBgra[2]; // each side's display bytes, for a split picture
     bool filmsValid = false;
     bool previewTried = false;
-    double secondsPerPixel = 0.0; // measured by the last pass, 0 before any
+    double secondsPerPixel = 0.0; // of one sample, measured by the last pass; 0 before any
     uint64_t published = 0;
     Film previewFilm;
     std::vector<uint8_t> previewBgra[2];
@@ -327,6 +329,10 @@ void RenderWorker::run() {
             PassOptions full = pass;
             full.displayRgba = bytes;
             full.displayOrder = PixelOrder::Bgra;
+            full.samples =
+                passSamples(films[side].samples(),
+                            static_cast<uint32_t>(sideSettings(job, side).samplesPerPixel),
+                            secondsPerPixel, pixelCount(settings));
             const auto start = Clock::now();
             const bool complete = renderPass(loaded.scene, loaded.bvh, sideSettings(job, side),
                                              films[side], &counts, full);
@@ -337,7 +343,7 @@ void RenderWorker::run() {
             }
             seconds = secondsSince(start);
             tally(&PassTotals::passes, seconds);
-            secondsPerPixel = seconds / static_cast<double>(pixelCount(settings));
+            secondsPerPixel = seconds / (static_cast<double>(pixelCount(settings)) * full.samples);
             displayed = sides == 1 || films[1 - side].samples() > 0;
             if (sides == 2 && films[1 - side].samples() > 0) {
                 // The other side's bytes may be of another display transform: made again below

@@ -23,7 +23,7 @@ struct Tally {
 
 // The render thread's work so far.
 struct PassTotals {
-    Tally passes;           // full-resolution passes that finished (one sample per pixel each)
+    Tally passes;           // full-resolution passes that finished (of pass_size.h's samples)
     Tally previews;         // coarse previews that finished
     uint64_t cancelled = 0; // passes or previews cancelled by a new job
 };

@@ -2,6 +2,8 @@
 sends them) must all reach Dear ImGui, so Ctrl+A, the typed path and Return open the scene."""
 
 import os
+import shutil
+import tempfile
 import time
 
 from e2e_support import PATH_FIELD, Viewer, check, same_pixels
@@ -72,3 +74,48 @@ def test_scene_path(env):
     finally:
         viewer.kill()
 
+
+
+# Offsets from PATH_FIELD (inside the path field) in Dear ImGui's default style (13-pixel font,
+# 19-pixel frames, 4-pixel spacing): the "Browse..." button on the row below the field, and the
+# browser's second entry (after ".."), below a one-line folder name and the list's padding.
+BROWSE_BUTTON = (PATH_FIELD[0] - 90, PATH_FIELD[1] + 23)
+SECOND_ENTRY = (PATH_FIELD[0], PATH_FIELD[1] + 85)
+
+
+def test_browse(env):
+    """Browse... opens a list of the path field's folder; a click on its one mesh file opens it
+    (the screenshot's "scene" and pixels say so), as typing its path would."""
+    folder = tempfile.mkdtemp(prefix="rl")  # short: its name takes one line in the panel
+    try:
+        quad = os.path.join(folder, "quad.obj")
+        with open(quad, "w") as f:
+            f.write(QUAD_OBJ)
+        with open(os.path.join(folder, "quad.mtl"), "w") as f:  # not a mesh: not listed
+            f.write(QUAD_MTL)
+        with open(os.path.join(folder, "notes.txt"), "w") as f:  # likewise
+            f.write("not a mesh")
+        viewer = Viewer(env, ["--width", "400", "--height", "300", "--spp", "1"])
+        try:
+            # The field names the folder (no Return: nothing is opened), Browse lists it.
+            viewer.xdotool("mousemove", "--window", viewer.window, str(PATH_FIELD[0]),
+                           str(PATH_FIELD[1]), "click", "1")
+            time.sleep(0.3)
+            viewer.xdotool("key", "--delay", "0", "ctrl+a")
+            viewer.xdotool("type", "--delay", "0", folder)
+            time.sleep(0.3)
+            viewer.xdotool("mousemove", "--window", viewer.window, str(BROWSE_BUTTON[0]),
+                           str(BROWSE_BUTTON[1]), "click", "1")
+            time.sleep(0.5)
+            viewer.xdotool("mousemove", "--window", viewer.window, str(SECOND_ENTRY[0]),
+                           str(SECOND_ENTRY[1]), "click", "1")
+            png, _ = viewer.shot_when(lambda png, s: s.get("scene") == quad,
+                                      f"no screenshot of {quad} after picking it in the browser",
+                                      seconds=40)
+            r, g, b, _ = png.pixel(png.width // 2, png.height // 2)
+            check(b > g > r and b > 60, f"the quad's centre shows {(r, g, b)}, expected its blue")
+            viewer.quit()
+        finally:
+            viewer.kill()
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)

@@ -28,7 +28,7 @@ from e2e_observer import test_observer  # noqa: E402
 from e2e_panel import test_panel, test_panel_edge, test_panel_scale  # noqa: E402
 from e2e_path import (test_bookmarks, test_drop, test_inspect, test_mean_n,  # noqa: E402
                       test_orbit, test_snapshot, test_split, test_undo)
-from e2e_scene_path import test_scene_path  # noqa: E402
+from e2e_scene_path import test_browse, test_scene_path  # noqa: E402
 from e2e_stats import test_idle, test_stats  # noqa: E402
 from e2e_teach import test_difference, test_hover_readout, test_ray_overlay  # noqa: E402
 from e2e_support import (PANEL_BUTTON, PANEL_COLUMN, Env, Failure, Viewer, check,  # noqa: E402
@@ -315,6 +315,7 @@ TESTS = {
     "close_in_flight": (test_close_in_flight, True),
     "minimise": (test_minimise, True),
     "scene_path": (test_scene_path, True),
+    "browse": (test_browse, True),
     "stats": (test_stats, True),
     "idle": (test_idle, True),
     "panel": (test_panel, True),

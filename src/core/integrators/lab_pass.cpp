@@ -87,17 +87,16 @@ inline void storeOrAddSquares(const RadiancePacket& radiance, int count, bool fi
 
 bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
              RayCounts* counts, const PassOptions& options) {
-    const int width = settings.width;
-    const uint32_t sampleIndex = film.nextSample();
-    const Film::Write how = film.nextWrite();
-    const bool first = how == Film::Write::First;
     const std::span<glm::vec3> squares = film.squares();
-    const PrimaryRays rays(settings.camera, width, settings.height);
-    const uint32_t sampleSeed = hash32(sampleIndex);
+    const PrimaryRays rays(settings.camera, settings.width, settings.height);
     static const bool simd = bvhSimdSupported();
 
     return forEachPassTile(
-        settings, film, counts, options, [&](const TileRect& tile, RayCounts& tileCounts) {
+        settings, film, counts, options,
+        [&](const TileRect& tile, const PassSample& sample, RayCounts& tileCounts) {
+            const uint32_t sampleIndex = sample.index;
+            const uint32_t sampleSeed = hash32(sampleIndex);
+            const bool first = sample.how == Film::Write::First;
             // Blocks of up to 8 x 8 pixels: each row of a block is one packet (shadeLabBlock).
             RayPacket packets[kPacketSize];
             RadiancePacket radiance[kPacketSize];
@@ -131,7 +130,7 @@ bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                                   tileCounts);
                     for (int r = 0; r < rows; ++r) {
                         const std::size_t row = film.indexOf(x0, y0 + r);
-                        write(radiance[r], count, how, row, film);
+                        write(radiance[r], count, sample.how, row, film);
                         if (!squares.empty()) {
                             storeOrAddSquares(radiance[r], count, first, &squares[row]);
                         }

@@ -39,15 +39,16 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                  const RenderSettings& settings, Film& film, RayCounts* counts,
                  const PassOptions& options) {
     const int width = settings.width;
-    const uint32_t sampleIndex = film.nextSample();
-    const Film::Write how = film.nextWrite();
-    const bool first = how == Film::Write::First;
     const std::span<glm::vec3> squares = film.squares();
     const std::span<glm::vec4> indirect = film.indirect();
     const PrimaryRays rays(settings.camera, width, settings.height);
     const bool path = settings.integrator == Integrator::Path;
     return forEachPassTile(
-        settings, film, counts, options, [&](const TileRect& tile, RayCounts& tileCounts) {
+        settings, film, counts, options,
+        [&](const TileRect& tile, const PassSample& passSample, RayCounts& tileCounts) {
+            const uint32_t sampleIndex = passSample.index;
+            const Film::Write how = passSample.how;
+            const bool first = how == Film::Write::First;
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     // Samples are drawn per pixel of the whole image; sums kept per pixel of the

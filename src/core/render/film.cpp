@@ -82,9 +82,10 @@ void Film::toDisplay(std::span<uint8_t> out, DisplayMode mode, float exposure,
     display(0, sums_.size(), samples(), out, mode, exposure, order);
 }
 
-void Film::toDisplayCounting(std::size_t first, std::size_t count, std::span<uint8_t> out,
-                             DisplayMode mode, float exposure, PixelOrder order) const {
-    display(first, count, samples() + 1, out, mode, exposure, order);
+void Film::toDisplayCounting(std::size_t first, std::size_t count, uint32_t added,
+                             std::span<uint8_t> out, DisplayMode mode, float exposure,
+                             PixelOrder order) const {
+    display(first, count, samples() + added, out, mode, exposure, order);
 }
 
 void Film::display(std::size_t first, std::size_t count, uint32_t samples, std::span<uint8_t> out,

@@ -121,11 +121,12 @@ public:
     uint32_t firstSample() const { return first_; }
     uint32_t nextSample() const { return next_; }
 
-    // How a pass writes sample nextSample() of a pixel: the range's first is kept as floats,
-    // the second turns them and itself into exact sums, later ones add to the sums.
+    // How a pass writes sample nextSample() + k of a pixel (k counts from 0 within a pass of
+    // several samples): the range's first is kept as floats, the second turns them and itself
+    // into exact sums, later ones add to the sums.
     enum class Write { First, Second, Later };
-    Write nextWrite() const {
-        const uint32_t n = samples();
+    Write nextWrite(uint32_t k = 0) const {
+        const uint32_t n = samples() + k;
         return n == 0 ? Write::First : (n == 1 ? Write::Second : Write::Later);
     }
     // Writes sample value r of pixel i as `how` says (nextWrite() of this pass). Passes write
@@ -152,8 +153,9 @@ public:
     std::span<glm::vec4> indirect() { return indirect_; }
     std::span<const glm::vec3> squares() const { return squares_; }
     std::span<const glm::vec4> indirect() const { return indirect_; }
-    // A pass that wrote sample nextSample() of every pixel counts it.
-    void passFinished() { ++next_; }
+    // A pass that wrote samples nextSample() .. nextSample() + added - 1 of every pixel counts
+    // them.
+    void passFinished(uint32_t added = 1) { next_ += added; }
 
     // The mean of pixel i, meanOf(sumOf(i), samples()).
     glm::vec3 mean(std::size_t i) const { return meanWith(i, samples()); }
@@ -163,10 +165,12 @@ public:
     // Display bytes of the mean (toRgba8 of the means): out holds 4 * pixelCount() bytes.
     void toDisplay(std::span<uint8_t> out, DisplayMode mode, float exposure,
                    PixelOrder order = PixelOrder::Rgba) const;
-    // For a pass, before it counts its sample: the display bytes of pixels [first, first +
-    // count) as toDisplay will write them once the pass is counted (out: 4 * count bytes).
-    void toDisplayCounting(std::size_t first, std::size_t count, std::span<uint8_t> out,
-                           DisplayMode mode, float exposure, PixelOrder order) const;
+    // For a pass, before it counts its `added` samples: the display bytes of pixels [first,
+    // first + count) as toDisplay will write them once the pass is counted (out: 4 * count
+    // bytes).
+    void toDisplayCounting(std::size_t first, std::size_t count, uint32_t added,
+                           std::span<uint8_t> out, DisplayMode mode, float exposure,
+                           PixelOrder order) const;
 
     NoiseEstimate noise() const;
     // The mean of the path integrator's N over every sample that hit a surface, per channel;

@@ -12,6 +12,12 @@
 namespace raylab {
 
 struct PassOptions {
+    // The samples of each pixel the pass writes: nextSample() .. nextSample() + samples - 1 of
+    // the film. A tile takes all of them before the next tile, so its pixels' sums stay in the
+    // cache: the exact sums are 48 bytes a pixel, and a picture larger than the cache otherwise
+    // costs a trip to memory per pixel and sample. The sums are the same bits however the
+    // samples are grouped into passes.
+    uint32_t samples = 1;
     const std::atomic<bool>* cancel = nullptr; // checked between tiles
     // Called on the calling thread with the fraction of the pass done, in [0, 1].
     std::function<void(double fraction)> progress;

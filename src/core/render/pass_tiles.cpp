@@ -7,7 +7,9 @@ namespace raylab {
 
 bool forEachPassTile(const RenderSettings& settings, Film& film, RayCounts* counts,
                      const PassOptions& options,
-                     const std::function<void(const TileRect& tile, RayCounts& counts)>& body) {
+                     const std::function<void(const TileRect& tile, const PassSample& sample,
+                                              RayCounts& counts)>& body) {
+    assert(options.samples >= 1);
     const FilmWindow window = film.window();
     assert(window.x0 >= 0 && window.y0 >= 0 && window.x1 <= settings.width &&
            window.y1 <= settings.height);
@@ -30,12 +32,14 @@ bool forEachPassTile(const RenderSettings& settings, Film& film, RayCounts* coun
         tile.y0 += window.y0;
         tile.y1 += window.y0;
         RayCounts tileCounts;
-        body(tile, tileCounts);
+        for (uint32_t k = 0; k < options.samples; ++k) {
+            body(tile, PassSample{film.nextSample() + k, film.nextWrite(k)}, tileCounts);
+        }
         if (!options.displayRgba.empty()) {
             for (int y = tile.y0; y < tile.y1; ++y) {
                 const std::size_t first = film.indexOf(tile.x0, y);
                 const std::size_t count = static_cast<std::size_t>(tile.x1 - tile.x0);
-                film.toDisplayCounting(first, count,
+                film.toDisplayCounting(first, count, options.samples,
                                        options.displayRgba.subspan(4 * first, 4 * count),
                                        settings.display, settings.exposure, options.displayOrder);
             }
@@ -50,7 +54,7 @@ bool forEachPassTile(const RenderSettings& settings, Film& film, RayCounts* coun
         counts->bounce += bounce.load();
     }
     if (complete) {
-        film.passFinished();
+        film.passFinished(options.samples);
     }
     return complete;
 }

@@ -3,6 +3,7 @@
 #include "integrators/lab_pass.h"
 #include "integrators/sampled_pass.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace raylab {
@@ -46,14 +47,21 @@ Framebuffer render(const Scene& scene, const Bvh& bvh, const RenderSettings& set
         emitters = buildEmitterTable(scene);
         pass.emitters = &emitters;
     }
+    // Passes of up to kSamplesPerPass samples, each tile taking a pass's samples in turn
+    // (PassOptions::samples); a cancel loses at most the pass under way.
     const int samples = settings.samplesPerPixel;
-    for (int s = 0; s < samples; ++s) {
+    for (int done = 0; done < samples;) {
+        const int now = std::min(kSamplesPerPass, samples - done);
         if (options.progress) {
-            pass.progress = [&](double fraction) { options.progress((s + fraction) / samples); };
+            pass.progress = [&](double fraction) {
+                options.progress((done + fraction * now) / samples);
+            };
         }
+        pass.samples = static_cast<uint32_t>(now);
         if (!renderPass(scene, bvh, settings, film, counts, pass)) {
             break;
         }
+        done += now;
     }
     return film.mean();
 }

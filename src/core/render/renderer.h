@@ -17,8 +17,14 @@ namespace raylab {
 // integrator (its noise and its mean N); none for the lab's, which stays as fast as it was.
 FilmLayers filmLayersFor(const RenderSettings& settings);
 
-// Adds sample film.nextSample() of every pixel of the film's window (the whole image of
-// settings.width x settings.height, or a crop of it) to the film and counts it. The lab
+// The samples a pass of a whole render takes at most (render(), raylab-render): enough that the
+// film's sums of a tile are read from memory once for many samples, few enough that a cancel
+// loses little.
+inline constexpr int kSamplesPerPass = 16;
+
+// Adds samples film.nextSample() .. film.nextSample() + options.samples - 1 of every pixel of
+// the film's window (the whole image of
+// settings.width x settings.height, or a crop of it) to the film and counts them. The lab
 // integrator's beauty with the lab's point light and no emitter takes the packet and 8 x 8 block
 // paths (integrators/lab_pass.h); every other case traces each pixel's sample on its own
 // (integrators/sampled_pass.h). When cancelled returns false and restarts the film, whose sums are
@@ -26,8 +32,9 @@ FilmLayers filmLayersFor(const RenderSettings& settings);
 bool renderPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, Film& film,
                 RayCounts* counts = nullptr, const PassOptions& options = {});
 
-// A whole render of settings.samplesPerPixel samples, averaged (film.mean()). Settings must pass
-// validate(). Cancelled: the samples finished so far, averaged.
+// A whole render of settings.samplesPerPixel samples, averaged (film.mean()), in passes of up to
+// kSamplesPerPass samples. Settings must pass validate(). Cancelled: the samples of the passes
+// finished so far, averaged.
 Framebuffer render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    RayCounts* counts = nullptr, const PassOptions& options = {});
 
