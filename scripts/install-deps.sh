@@ -9,7 +9,7 @@ packages=(
     libgtest-dev libgmock-dev libembree-dev
     libglfw3-dev libimgui-dev python3-glad libgl-dev
     libseccomp-dev strace
-    xvfb xauth xdotool libgl1-mesa-dri openbox
+    xvfb xauth xdotool x11-utils libgl1-mesa-dri openbox
     slurm-wlm munge
 )
 

@@ -1,8 +1,8 @@
 #version 330 core
 // The overlay's lines (the inspected pixel's rays), drawn as triangles over the picture: each
-// vertex in framebuffer pixels (origin bottom-left, as gl_FragCoord) with its colour.
+// vertex in pixels of the viewport (the picture's box; origin bottom-left) with its colour.
 
-uniform vec2 uViewportSize; // framebuffer pixels
+uniform vec2 uViewportSize; // the viewport's size in pixels
 
 layout(location = 0) in vec2 aPosition;
 layout(location = 1) in vec3 aColour;

@@ -4,71 +4,64 @@
 #include "overlay_shaders.h"
 
 #include <algorithm>
+#include <array>
 #include <glad/gl.h>
 #include <vector>
 
 namespace raylab::viewer {
 
-// The split's divider: a white line two pixels wide over the picture at framebuffer column x
-// (drawn by GL over the quad, never into the traced picture or its screenshots).
-void drawDivider(int x, int framebufferHeight) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(std::max(x - 1, 0), 0, 2, framebufferHeight);
-    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
-}
+namespace {
 
-// A square outline around the inspected pixel (px, py) of a width x height picture shown over
-// the whole framebuffer, drawn by GL over the quad.
-void drawPixelMarker(int px, int py, int width, int height, int framebufferWidth,
-                     int framebufferHeight) {
-    const int x0 = px * framebufferWidth / width;
-    const int x1 = (px + 1) * framebufferWidth / width;
-    const int top = py * framebufferHeight / height;
-    const int bottom = (py + 1) * framebufferHeight / height;
-    // GL's rows count from the bottom.
-    const int y0 = framebufferHeight - bottom;
-    const int size = std::max(x1 - x0, bottom - top) + 8;
-    const int cx = (x0 + x1) / 2;
-    const int cy = y0 + (bottom - top) / 2;
+// Fills the framebuffer boxes `boxes`, clipped to the layout's picture, with one colour.
+void fillBoxes(const ViewLayout& layout, std::span<const PixelBox> boxes, float r, float g,
+               float b) {
     glEnable(GL_SCISSOR_TEST);
-    glClearColor(1.0f, 0.2f, 0.8f, 1.0f);
-    const int left = cx - size / 2;
-    const int low = cy - size / 2;
-    const int rects[4][4] = {{left, low, size, 2},
-                             {left, low + size - 2, size, 2},
-                             {left, low, 2, size},
-                             {left + size - 2, low, 2, size}};
-    for (const auto& r : rects) {
-        glScissor(std::max(r[0], 0), std::max(r[1], 0), r[2], r[3]);
-        glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(r, g, b, 1.0f);
+    for (const PixelBox& box : boxes) {
+        const PixelBox clipped = intersect(box, layout.picture);
+        if (!clipped.empty()) {
+            const GlBox gl = glBox(clipped, layout.framebufferHeight);
+            glScissor(gl.x, gl.y, gl.width, gl.height);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
     }
     glDisable(GL_SCISSOR_TEST);
 }
 
-void drawPixelRectangle(int x0, int y0, int x1, int y1, int width, int height, int framebufferWidth,
-                        int framebufferHeight) {
-    if (width <= 0 || height <= 0) {
+// The four sides, `thickness` pixels wide, of the framebuffer box `box`, inside it.
+std::array<PixelBox, 4> outline(const PixelBox& box, int thickness) {
+    return {PixelBox{box.x, box.y, box.width, thickness},
+            PixelBox{box.x, box.y + box.height - thickness, box.width, thickness},
+            PixelBox{box.x, box.y, thickness, box.height},
+            PixelBox{box.x + box.width - thickness, box.y, thickness, box.height}};
+}
+
+} // namespace
+
+// Drawn by GL over the quad, never into the traced picture or its screenshots.
+void drawDivider(const ViewLayout& layout, int column) {
+    const PixelBox line{layout.picture.x + column - 1, layout.picture.y, 2, layout.picture.height};
+    fillBoxes(layout, std::span(&line, 1), 1.0f, 1.0f, 1.0f);
+}
+
+void drawPixelMarker(const ViewLayout& layout, int px, int py, int width, int height) {
+    const PixelBox pixel = pictureToFramebuffer(layout.picture, width, height, px, py, px, py);
+    if (pixel.empty()) {
         return;
     }
-    // The framebuffer pixels that show the rectangle's pixels; GL's rows count from the bottom.
-    const int left = std::min(x0, x1) * framebufferWidth / width;
-    const int right = (std::max(x0, x1) + 1) * framebufferWidth / width;
-    const int top = std::min(y0, y1) * framebufferHeight / height;
-    const int bottom = (std::max(y0, y1) + 1) * framebufferHeight / height;
-    const int low = framebufferHeight - bottom;
-    const int w = std::max(right - left, 1);
-    const int h = std::max(bottom - top, 1);
-    const int rects[4][4] = {
-        {left, low, w, 1}, {left, low + h - 1, w, 1}, {left, low, 1, h}, {left + w - 1, low, 1, h}};
-    glEnable(GL_SCISSOR_TEST);
-    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-    for (const auto& r : rects) {
-        glScissor(std::max(r[0], 0), std::max(r[1], 0), r[2], r[3]);
-        glClear(GL_COLOR_BUFFER_BIT);
+    // A square 8 pixels wider than the pixel's, about its centre.
+    const int size = std::max(pixel.width, pixel.height) + 8;
+    const PixelBox square{pixel.x + pixel.width / 2 - size / 2,
+                          pixel.y + pixel.height - pixel.height / 2 - size / 2, size, size};
+    fillBoxes(layout, outline(square, 2), 1.0f, 0.2f, 0.8f);
+}
+
+void drawPixelRectangle(const ViewLayout& layout, int x0, int y0, int x1, int y1, int width,
+                        int height) {
+    const PixelBox box = pictureToFramebuffer(layout.picture, width, height, x0, y0, x1, y1);
+    if (!box.empty()) {
+        fillBoxes(layout, outline(box, 1), 1.0f, 1.0f, 1.0f);
     }
-    glDisable(GL_SCISSOR_TEST);
 }
 
 OverlayLines::~OverlayLines() {
@@ -102,16 +95,17 @@ bool OverlayLines::create(std::string& error) {
 }
 
 void OverlayLines::draw(std::span<const ImageSegment> segments, int width, int height,
-                        int framebufferWidth, int framebufferHeight) {
-    if (program_ == 0 || segments.empty() || width <= 0 || height <= 0 || framebufferWidth <= 0 ||
-        framebufferHeight <= 0) {
+                        const ViewLayout& layout) {
+    const PixelBox& area = layout.picture;
+    if (program_ == 0 || segments.empty() || width <= 0 || height <= 0 || area.empty()) {
         return;
     }
-    // Picture pixels (y down) to framebuffer pixels (y up), then a quad per segment.
-    const float sx = static_cast<float>(framebufferWidth) / static_cast<float>(width);
-    const float sy = static_cast<float>(framebufferHeight) / static_cast<float>(height);
+    // Picture pixels (y down) to pixels of the picture's box (y up from its bottom edge: the
+    // viewport below is the box), then a quad per segment.
+    const float sx = static_cast<float>(area.width) / static_cast<float>(width);
+    const float sy = static_cast<float>(area.height) / static_cast<float>(height);
     const auto toFramebuffer = [&](const glm::vec2& p) {
-        return glm::vec2(p.x * sx, static_cast<float>(framebufferHeight) - p.y * sy);
+        return glm::vec2(p.x * sx, static_cast<float>(area.height) - p.y * sy);
     };
     std::vector<float> vertices;
     std::vector<glm::vec2> corners;
@@ -127,14 +121,16 @@ void OverlayLines::draw(std::span<const ImageSegment> segments, int width, int h
     if (vertices.empty()) {
         return;
     }
-    glViewport(0, 0, framebufferWidth, framebufferHeight);
+    // The viewport clips the lines to the picture's box.
+    const GlBox viewport = glBox(area, layout.framebufferHeight);
+    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glUseProgram(program_);
-    glUniform2f(viewportSizeLocation_, static_cast<float>(framebufferWidth),
-                static_cast<float>(framebufferHeight));
+    glUniform2f(viewportSizeLocation_, static_cast<float>(area.width),
+                static_cast<float>(area.height));
     glBindVertexArray(vertexArray_);
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),

@@ -1,23 +1,25 @@
 #pragma once
 // What the viewer draws over the traced picture with GL (never into the picture or its
 // screenshots): the split's divider, the inspected pixel's marker, a rectangle's outline and the
-// inspected pixel's rays. Call them after the picture's quad; the picture covers the whole
-// framebuffer.
+// inspected pixel's rays. Call them after the picture's quad; each draws inside the picture's box
+// of the layout (view_layout.h) only, never over the panel.
 
 #include "ray_overlay_geometry.h"
+#include "view_layout.h"
 
 #include <span>
 #include <string>
 
 namespace raylab::viewer {
 
-void drawDivider(int x, int framebufferHeight);
-void drawPixelMarker(int px, int py, int width, int height, int framebufferWidth,
-                     int framebufferHeight);
+// The split's divider: a white line two pixels wide at `column` of the picture's box.
+void drawDivider(const ViewLayout& layout, int column);
+// A square outline around pixel (px, py) of a width x height picture shown over the box.
+void drawPixelMarker(const ViewLayout& layout, int px, int py, int width, int height);
 // The outline (white, 1 framebuffer pixel wide) of picture pixels x0..x1 by y0..y1 (inclusive,
 // in either order) of a width x height picture.
-void drawPixelRectangle(int x0, int y0, int x1, int y1, int width, int height, int framebufferWidth,
-                        int framebufferHeight);
+void drawPixelRectangle(const ViewLayout& layout, int x0, int y0, int x1, int y1, int width,
+                        int height);
 
 // The inspected pixel's rays (ray_overlay_geometry.h) as lines kRayLineWidth framebuffer pixels
 // wide in overlayColour(kind). Needs a current OpenGL 3.3 core context for its whole life.
@@ -33,9 +35,10 @@ public:
     // Compiles the shaders and makes the vertex buffer. False with a one-line error.
     bool create(std::string& error);
 
-    // Draws segments in pixels of a width x height picture shown over the whole framebuffer.
-    void draw(std::span<const ImageSegment> segments, int width, int height, int framebufferWidth,
-              int framebufferHeight);
+    // Draws segments in pixels of a width x height picture shown over the layout's picture box,
+    // clipped to it.
+    void draw(std::span<const ImageSegment> segments, int width, int height,
+              const ViewLayout& layout);
 
 private:
     unsigned program_ = 0;

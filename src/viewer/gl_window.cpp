@@ -29,6 +29,7 @@ bool GlWindow::open(int width, int height, const std::string& title, std::string
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE); // required on macOS, harmless elsewhere
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);      // honour the monitor's content scale
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE); // shown once sized for the panel (show())
     window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (window_ == nullptr) {
         const char* why = nullptr;
@@ -46,8 +47,17 @@ bool GlWindow::open(int width, int height, const std::string& title, std::string
     return true;
 }
 
+void GlWindow::show() { glfwShowWindow(window_); }
+
 void GlWindow::framebufferSize(int& width, int& height) const {
     glfwGetFramebufferSize(window_, &width, &height);
+}
+
+float GlWindow::framebufferScale() const {
+    int width = 0, height = 0, pixels = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    glfwGetFramebufferSize(window_, &pixels, &height);
+    return width > 0 && pixels > 0 ? static_cast<float>(pixels) / static_cast<float>(width) : 1.0f;
 }
 
 bool GlWindow::minimised() const {

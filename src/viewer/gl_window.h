@@ -15,14 +15,19 @@ public:
     GlWindow& operator=(const GlWindow&) = delete;
     ~GlWindow();
 
-    // Opens a width x height window (screen coordinates) titled `title`, makes its context
-    // current and loads GL. Returns false with a one-line error (no display, no GL 3.3, ...).
+    // Opens a width x height window (screen coordinates) titled `title`, hidden until show(),
+    // makes its context current and loads GL. Returns false with a one-line error (no display,
+    // no GL 3.3, ...).
     bool open(int width, int height, const std::string& title, std::string& error);
+    void show();
 
     GLFWwindow* handle() const { return window_; }
     // The drawable size in pixels (differs from the window size on high-DPI screens); 0 x 0
     // while minimised.
     void framebufferSize(int& width, int& height) const;
+    // Framebuffer pixels per screen coordinate (2 on a macOS Retina screen, else 1); 1 while
+    // minimised.
+    float framebufferScale() const;
     // True while the window is iconified (on X11 its framebuffer keeps its size) or its
     // framebuffer is empty (0 x 0, as minimised windows have elsewhere): nothing to draw.
     bool minimised() const;

@@ -17,6 +17,7 @@ bool ImageQuad::create(std::string& error) {
     if (program_ == 0) {
         return false;
     }
+    viewportOriginLocation_ = glGetUniformLocation(program_, "uViewportOrigin");
     viewportSizeLocation_ = glGetUniformLocation(program_, "uViewportSize");
     imageLocation_ = glGetUniformLocation(program_, "uImage");
 
@@ -66,26 +67,28 @@ void ImageQuad::upload(const Rgba8Image& image) { // B, G, R, A bytes
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void ImageQuad::draw(int framebufferWidth, int framebufferHeight) const {
-    if (!hasImage() || framebufferWidth <= 0 || framebufferHeight <= 0) {
+void ImageQuad::draw(const ViewLayout& layout) const {
+    if (!hasImage() || layout.picture.empty()) {
         return;
     }
+    const GlBox box = glBox(layout.picture, layout.framebufferHeight);
     glDisable(GL_SCISSOR_TEST); // the blit and the quad both honour the scissor
-    if (blitReady_ && width_ == framebufferWidth && height_ == framebufferHeight) {
+    if (blitReady_ && width_ == box.width && height_ == box.height) {
         // Texture row 0 (the image's top) is the framebuffer object's bottom row: flip in y.
         glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, width_, height_, 0, height_, width_, 0, GL_COLOR_BUFFER_BIT,
-                          GL_NEAREST);
+        glBlitFramebuffer(0, 0, width_, height_, box.x, box.y + height_, box.x + width_, box.y,
+                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
         return;
     }
-    glViewport(0, 0, framebufferWidth, framebufferHeight);
+    glViewport(box.x, box.y, box.width, box.height);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glUseProgram(program_);
-    glUniform2i(viewportSizeLocation_, framebufferWidth, framebufferHeight);
+    glUniform2i(viewportOriginLocation_, box.x, box.y);
+    glUniform2i(viewportSizeLocation_, box.width, box.height);
     glUniform1i(imageLocation_, 0);
     drawTexturedTriangles(vertexArray_, texture_);
 }

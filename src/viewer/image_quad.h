@@ -1,13 +1,14 @@
 #pragma once
-// The CPU image on screen: an 8-bit texture holding BGRA data, shown over the whole framebuffer,
-// row 0 of the image at the top, with nearest filtering and an exact texel-to-pixel mapping.
-// When the image has the framebuffer's size (resolution scale 1), it is copied with
-// glBlitFramebuffer (flipped, 1:1) from a framebuffer object holding the texture: on Mesa's
-// llvmpipe, with the texture in the window's BGRA order, that is a plain copy (PERFORMANCE.md).
-// Otherwise a fullscreen quad samples it (shaders/quad.frag). Needs a current OpenGL 3.3 core
-// context (glad loaded) for its whole life.
+// The CPU image on screen: an 8-bit texture holding BGRA data, shown over the picture's box of
+// the window's layout (view_layout.h), row 0 of the image at the top, with nearest filtering and
+// an exact texel-to-pixel mapping. When the image has the box's size (resolution scale 1), it is
+// copied with glBlitFramebuffer (flipped, 1:1) from a framebuffer object holding the texture: on
+// Mesa's llvmpipe, with the texture in the window's BGRA order, that is a plain copy
+// (PERFORMANCE.md). Otherwise a quad over the box samples it (shaders/quad.frag). Needs a
+// current OpenGL 3.3 core context (glad loaded) for its whole life.
 
 #include "io/image_io.h"
+#include "view_layout.h"
 
 #include <cstdint>
 #include <string>
@@ -30,10 +31,10 @@ public:
     void upload(const Rgba8Image& bgraImage);
     bool hasImage() const { return width_ > 0 && height_ > 0; }
 
-    // Draws the image over the whole of the default framebuffer (0, 0, framebufferWidth,
-    // framebufferHeight), every pixel written (no clear needed when hasImage()). Leaves the
+    // Draws the image over the layout's picture box of the default framebuffer, every pixel of
+    // the box written (no clear needed there when hasImage()); nothing outside it. Leaves the
     // default framebuffer bound for drawing and reading.
-    void draw(int framebufferWidth, int framebufferHeight) const;
+    void draw(const ViewLayout& layout) const;
 
     // Seconds the last upload took (CPU side, including the driver's copy).
     double lastUploadSeconds() const { return uploadSeconds_; }
@@ -44,6 +45,7 @@ private:
     unsigned texture_ = 0;
     unsigned framebuffer_ = 0; // reads the texture for the blit
     bool blitReady_ = false;   // the framebuffer object is complete at the texture's size
+    int viewportOriginLocation_ = -1;
     int viewportSizeLocation_ = -1;
     int imageLocation_ = -1;
     int width_ = 0;

@@ -38,17 +38,6 @@ void cursorInPixels(GLFWwindow* window, double& x, double& y) {
     }
 }
 
-bool pixelUnderCursor(double x, double y, int framebufferWidth, int framebufferHeight,
-                      int renderWidth, int renderHeight, int& px, int& py) {
-    if (framebufferWidth <= 0 || framebufferHeight <= 0 || x < 0.0 || y < 0.0 ||
-        x >= framebufferWidth || y >= framebufferHeight) {
-        return false;
-    }
-    px = std::min(renderWidth - 1, static_cast<int>(x * renderWidth / framebufferWidth));
-    py = std::min(renderHeight - 1, static_cast<int>(y * renderHeight / framebufferHeight));
-    return px >= 0 && py >= 0;
-}
-
 void InputCollector::attach(GLFWwindow* window) {
     glfwSetWindowUserPointer(window, this);
     glfwSetKeyCallback(window, &InputCollector::onKey);
@@ -62,6 +51,7 @@ void InputCollector::attach(GLFWwindow* window) {
     glfwSetWindowRefreshCallback(window, &InputCollector::onRefresh);
     glfwSetWindowIconifyCallback(window, &InputCollector::onIconify);
     glfwSetDropCallback(window, &InputCollector::onDrop);
+    glfwSetWindowContentScaleCallback(window, &InputCollector::onContentScale);
 }
 
 InputEvents InputCollector::take() {
@@ -126,6 +116,12 @@ void InputCollector::onDrop(GLFWwindow* window, int count, const char** paths) {
     for (int i = 0; i < count; ++i) {
         events.dropped.emplace_back(paths[i]);
     }
+}
+
+void InputCollector::onContentScale(GLFWwindow* window, float, float) {
+    InputEvents& events = collectorOf(window)->events_;
+    events.other = true;
+    events.contentScale = true;
 }
 
 void InputCollector::onChar(GLFWwindow* window, unsigned int) {
@@ -194,18 +190,19 @@ std::optional<Command> commandForKey(int glfwKey) {
     }
 }
 
-bool DividerDrag::update(GLFWwindow* window, bool start, int framebufferWidth, float& divider) {
+bool DividerDrag::update(GLFWwindow* window, bool start, const PixelBox& picture, float& divider) {
     if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS && !start) {
         dragging_ = false;
         return false;
     }
     double x = 0.0, y = 0.0;
     cursorInPixels(window, x, y);
+    x -= picture.x; // the divider's column counts from the picture's left edge
     if (start) {
-        dragging_ = grabsDivider(x, framebufferWidth, divider);
+        dragging_ = picture.contains(x + picture.x, y) && grabsDivider(x, picture.width, divider);
     }
-    if (dragging_ && framebufferWidth > 0) {
-        divider = std::clamp(static_cast<float>(x / framebufferWidth), 0.0f, 1.0f);
+    if (dragging_ && picture.width > 0) {
+        divider = std::clamp(static_cast<float>(x / picture.width), 0.0f, 1.0f);
     }
     return dragging_;
 }

@@ -2,7 +2,8 @@
 // Keyboard and mouse events of the window, collected by GLFW callbacks between two frames and
 // handed to the frame in one piece. Key presses are queued as events (not polled), so a press and
 // release within one frame (as xdotool sends them) is never lost. Every input or window event
-// (also releases, characters, cursor moves, focus, resize, expose, minimise) is noted, so the
+// (also releases, characters, cursor moves, focus, resize, expose, minimise, a new content
+// scale) is noted, so the
 // window knows that a frame is wanted (redraw_schedule.h).
 //
 // The navigation keys (navActionForKey) are recorded apart, as presses and releases with the time
@@ -10,6 +11,7 @@
 // Losing the focus is recorded among them (GLFW does not always send the releases then).
 
 #include "navigation.h"
+#include "view_layout.h"
 
 #include <chrono>
 #include <optional>
@@ -57,6 +59,7 @@ struct InputEvents {
     bool panPressed = false;           // the middle button went down: pan
     bool keyboard = false;             // a key (press, repeat, release) or a character arrived
     bool other = false;                // a mouse, cursor or window event arrived
+    bool contentScale = false;         // the window's content scale changed (another monitor)
 };
 
 class InputCollector {
@@ -84,6 +87,7 @@ private:
     static void onRefresh(GLFWwindow* window);
     static void onIconify(GLFWwindow* window, int iconified);
     static void onDrop(GLFWwindow* window, int count, const char** paths);
+    static void onContentScale(GLFWwindow* window, float xscale, float yscale);
     InputEvents events_;
 };
 
@@ -101,18 +105,14 @@ std::optional<int> bookmarkForKey(int glfwKey);
 // The cursor in framebuffer pixels (screen coordinates scaled on high-DPI screens).
 void cursorInPixels(GLFWwindow* window, double& x, double& y);
 
-// The picture's pixel (px, py) under framebuffer point (x, y), the picture of renderWidth x
-// renderHeight pixels covering the whole framebuffer; false outside it.
-bool pixelUnderCursor(double x, double y, int framebufferWidth, int framebufferHeight,
-                      int renderWidth, int renderHeight, int& px, int& py);
-
 // The split's divider under the mouse: a press that grabs it (grabsDivider) moves it with the
 // cursor until the button is released, instead of turning the camera.
 class DividerDrag {
 public:
-    // `start`: a press outside the panel happened now. Updates `divider` while dragging and
-    // returns whether a divider drag is under way (then the press is not the camera's).
-    bool update(GLFWwindow* window, bool start, int framebufferWidth, float& divider);
+    // `start`: a press outside the panel happened now; `picture`: the picture's box in the
+    // framebuffer (view_layout.h). Updates `divider` while dragging and returns whether a
+    // divider drag is under way (then the press is not the camera's).
+    bool update(GLFWwindow* window, bool start, const PixelBox& picture, float& divider);
 
 private:
     bool dragging_ = false;

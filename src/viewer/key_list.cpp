@@ -27,7 +27,8 @@ constexpr KeyHelp kKeys[] = {
     {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo, redo (a drag or a walk is one step)"},
     {"Ctrl+1..9, 1..9", "keep the camera as a bookmark, return to it"},
     {"F12", "save a screenshot"},
-    {"F1", "show / hide the panel"},
+    {"F1", "show / hide the panel (hidden, the picture takes the whole window)"},
+    {"drag the panel's right edge", "a wider or narrower panel; the picture gets the rest"},
     {"H or ?", "show / hide this list"},
     {"Escape", "cancel a scene load; quit when none runs"},
 };
@@ -36,10 +37,8 @@ constexpr KeyHelp kKeys[] = {
 
 std::span<const KeyHelp> keyList() { return kKeys; }
 
-void drawKeyList() {
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.5f * io.DisplaySize.y),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+void drawKeyList(float x, float y) {
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Keys and mouse (H)", nullptr,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoCollapse);

@@ -13,7 +13,8 @@ struct KeyHelp {
 
 std::span<const KeyHelp> keyList();
 
-// Draws the list as a Dear ImGui window in the middle of the display (for this ImGui frame).
-void drawKeyList();
+// Draws the list as a Dear ImGui window centred on (x, y), in Dear ImGui's coordinates (for this
+// ImGui frame).
+void drawKeyList(float x, float y);
 
 } // namespace raylab::viewer

@@ -17,13 +17,11 @@ static_assert(GLFW_MOUSE_BUTTON_RIGHT == 1 && GLFW_MOUSE_BUTTON_MIDDLE == 2);
 namespace {
 
 glm::vec3 pointUnderCursor(GLFWwindow* window, const LoadedScene& scene,
-                           const RenderSettings& settings, int framebufferWidth,
-                           int framebufferHeight) {
+                           const RenderSettings& settings, const PixelBox& area) {
     double x = 0.0, y = 0.0;
     cursorInPixels(window, x, y);
     int px = 0, py = 0;
-    if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, settings.width, settings.height,
-                         px, py)) {
+    if (pixelUnderCursor(x, y, area, settings.width, settings.height, px, py)) {
         const Ray ray = PrimaryRays(settings.camera, settings.width, settings.height)
                             .through(static_cast<float>(px) + 0.5f, static_cast<float>(py) + 0.5f);
         if (const Hit hit = closestHit(scene.bvh, ray); hit.found()) {
@@ -39,14 +37,13 @@ glm::vec3 pointUnderCursor(GLFWwindow* window, const LoadedScene& scene,
 // The orbit (right drag, or Alt + left: about the point under the cursor at the press) and the
 // pan (middle drag: the point under the cursor follows it) applied to `settings`.
 void applyOrbitAndPan(const InputEvents& events, bool panelHasMouse, GLFWwindow* window,
-                      const LoadedScene& scene, int framebufferWidth, int framebufferHeight,
-                      OrbitControls& controls, RenderSettings& settings) {
+                      const LoadedScene& scene, const PixelBox& area, OrbitControls& controls,
+                      RenderSettings& settings) {
     constexpr double kOrbitDegreesPerPixel = 0.3;
     const bool orbitStart = events.orbitPressed && !panelHasMouse;
     const bool panStart = events.panPressed && !panelHasMouse;
     if (orbitStart || panStart) {
-        controls.pivot =
-            pointUnderCursor(window, scene, settings, framebufferWidth, framebufferHeight);
+        controls.pivot = pointUnderCursor(window, scene, settings, area);
     }
     double dx = 0.0, dy = 0.0;
     if (controls.orbit.update(window, orbitStart, dx, dy) && (dx != 0.0 || dy != 0.0)) {
@@ -58,7 +55,7 @@ void applyOrbitAndPan(const InputEvents& events, bool panelHasMouse, GLFWwindow*
         // World units per framebuffer pixel at the pivot's distance.
         const float perPixel =
             glm::length(controls.pivot - settings.camera.position) /
-            focalLengthPixels(settings.camera.verticalFovDegrees, std::max(framebufferHeight, 1));
+            focalLengthPixels(settings.camera.verticalFovDegrees, std::max(area.height, 1));
         panCamera(settings.camera, static_cast<float>(dx) * perPixel,
                   static_cast<float>(dy) * perPixel);
     }

@@ -20,9 +20,10 @@ struct OrbitControls {
 };
 
 // The orbit and the pan of this frame's events applied to settings.camera; `panelHasMouse`:
-// Dear ImGui wants the mouse (no drag starts).
+// Dear ImGui wants the mouse (no drag starts); the picture is shown over the framebuffer's box
+// `area` (view_layout.h).
 void applyOrbitAndPan(const InputEvents& events, bool panelHasMouse, GLFWwindow* window,
-                      const LoadedScene& scene, int framebufferWidth, int framebufferHeight,
-                      OrbitControls& controls, RenderSettings& settings);
+                      const LoadedScene& scene, const PixelBox& area, OrbitControls& controls,
+                      RenderSettings& settings);
 
 } // namespace raylab::viewer

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -31,6 +32,9 @@ bool colourButton(const char* id, glm::vec3& colour) {
                              ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel |
                                  ImGuiColorEditFlags_Float);
 }
+
+// A size given for Dear ImGui's default 13-pixel font, at the font's size (the UI scale's).
+float atFontSize(float pixels) { return pixels / 13.0f * ImGui::GetFontSize(); }
 
 // Two widgets on one row: each gets half of the item width.
 float halfWidth() { return 0.5f * (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x); }
@@ -405,16 +409,16 @@ void statisticsSection(const PanelView& view) {
     if (n.noisePercent.count() > 0) {
         ImGui::PlotLines("##noise", n.noisePercent.data(), n.noisePercent.size(),
                          n.noisePercent.offset(), "noise %", 0.0f, FLT_MAX,
-                         ImVec2(ImGui::CalcItemWidth(), 32.0f));
+                         ImVec2(ImGui::CalcItemWidth(), atFontSize(32.0f)));
         ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
         ImGui::TextUnformatted("noise");
     }
     const float half = halfWidth();
     ImGui::PlotLines("##pass", n.passMs.data(), n.passMs.size(), n.passMs.offset(), "pass ms", 0.0f,
-                     FLT_MAX, ImVec2(half, 32.0f));
+                     FLT_MAX, ImVec2(half, atFontSize(32.0f)));
     ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::PlotLines("##draw", n.drawMs.data(), n.drawMs.size(), n.drawMs.offset(), "draw ms", 0.0f,
-                     FLT_MAX, ImVec2(half, 32.0f));
+                     FLT_MAX, ImVec2(half, atFontSize(32.0f)));
     ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::TextUnformatted("times");
 }
@@ -468,15 +472,34 @@ void sceneRow(PanelState& state, const PanelView& view, PanelActions& actions) {
 PanelActions drawPanel(PanelState& state, const PanelView& view) {
     PanelActions actions;
     const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(kPanelX, kPanelY), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(
-        ImVec2(kPanelWidth, 0.0f),
-        ImVec2(kPanelWidth, std::max(60.0f, io.DisplaySize.y - 2.0f * kPanelY)));
-    ImGui::Begin("raylab", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
-    ImGui::PushItemWidth(-110.0f); // room for the labels
+    // The column: the left edge, the display's height, the width given; only the right edge
+    // moves (a drag on it is read back below). Opaque, with square corners and no border: it is
+    // the window's side, not a window over the picture. The window leaves the column's last unit
+    // (a dark line between panel and picture) to the anti-aliased fringe of its resize grip,
+    // which would otherwise reach the picture's first pixel column.
+    const float height = io.DisplaySize.y;
+    const float width = view.width - 1.0f;
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(view.minWidth, view.width) - 1.0f, height),
+                                        ImVec2(std::max(view.maxWidth, view.width) - 1.0f, height));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImVec4 background = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    background.w = 1.0f;
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, background);
+    ImGui::Begin("raylab", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::PopStyleColor();
+    ImGui::PopStyleVar(2);
+    if (const float now = ImGui::GetWindowWidth(); std::abs(now - std::floor(width)) >= 1.0f) {
+        actions.resizedTo = now + 1.0f;
+    }
+    ImGui::PushItemWidth(-atFontSize(110.0f)); // room for the labels
 
-    // First, so their places are fixed: scripts click the button at (kPanelX + 100,
-    // kPanelY + 36) and the path field below it.
+    // First, so their places are fixed: scripts click the button at (100, 17) (at UI scale 1)
+    // and the path field below it.
     if (ImGui::Button("Save screenshot (F12)", ImVec2(-1.0f, 0.0f))) {
         actions.screenshot = true;
     }

@@ -1,8 +1,10 @@
 #pragma once
 // The Dear ImGui panel: light, light transport (integrator, bounces, the lab's N against the
 // computed one), indirect term and shadows, camera, display, statistics and scene.
-// It sits at a fixed place (kPanelX, kPanelY), with the screenshot button first, so scripts can
-// click it. Widgets edit a copy of the settings that is accepted only when valid (settings_edit.h).
+// It fills the column at the window's left edge that the layout gives it (view_layout.h), the
+// window's height, beside the picture; dragging its right edge makes it wider or narrower. The
+// screenshot button comes first, at a fixed place, so scripts can click it. Widgets edit a copy
+// of the settings that is accepted only when valid (settings_edit.h).
 
 #include "core/integrators/pixel_inspection.h"
 #include "core/render_settings.h"
@@ -13,6 +15,7 @@
 #include "panel_numbers.h"
 #include "pixel_readout.h"
 #include "scene_loader.h"
+#include "view_layout.h"
 
 #include <array>
 #include <cstddef>
@@ -20,10 +23,6 @@
 #include <string>
 
 namespace raylab::viewer {
-
-inline constexpr float kPanelX = 8.0f; // screen coordinates of the panel's top-left corner
-inline constexpr float kPanelY = 8.0f;
-inline constexpr float kPanelWidth = 340.0f;
 
 // What the panel edits.
 struct PanelState {
@@ -54,6 +53,11 @@ struct PanelState {
 
 // What the panel shows but does not edit.
 struct PanelView {
+    // The panel's column in Dear ImGui units: its width (its height is the display's) and the
+    // widths a drag of its right edge may give it.
+    float width = kPanelColumnWidth;
+    float minWidth = kMinPanelColumnWidth;
+    float maxWidth = kPanelColumnWidth;
     std::string sceneName;
     std::size_t triangles = 0;
     std::optional<LoadProgress> loading; // the scene load running in the background, if any
@@ -81,6 +85,7 @@ struct PanelActions {
     bool useMeanIndirect = false; // set the lab's N to the path-traced picture's mean N
     bool keepSnapshot = false;    // keep the current settings as snapshot A
     bool toggleObserver = false;  // the observer view on / off
+    float resizedTo = 0.0f;       // > 0: its edge was dragged; the width it has now (units)
 };
 
 // Draws the panel for this ImGui frame.

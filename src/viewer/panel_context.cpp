@@ -1,5 +1,6 @@
 #include "panel_context.h"
 
+#include <cmath>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -29,6 +30,23 @@ PanelContext::~PanelContext() {
 }
 
 void PanelContext::beginFrame() {
+    if (wantedScale_ != scale_) {
+        scale_ = wantedScale_;
+        ImGuiStyle style;
+        ImGui::StyleColorsDark(&style);
+        style.ScaleAllSizes(scale_);
+        ImGui::GetStyle() = style;
+        ImGuiIO& io = ImGui::GetIO();
+        io.Fonts->Clear();
+        ImFontConfig font;
+        font.SizePixels = std::round(13.0f * scale_); // ProggyClean's own size, scaled
+        io.Fonts->AddFontDefault(&font);
+        if (framesBegun_) { // else the renderer builds the texture at its first frame
+            ImGui_ImplOpenGL3_DestroyFontsTexture();
+            ImGui_ImplOpenGL3_CreateFontsTexture();
+        }
+    }
+    framesBegun_ = true;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

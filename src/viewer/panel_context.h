@@ -1,7 +1,8 @@
 #pragma once
 // The panel's Dear ImGui context on the window: the context, GLFW platform backend and OpenGL3
 // renderer backend, set up in the order of Dear ImGui's example_glfw_opengl3 and torn down in
-// reverse.
+// reverse. Its UI scale (a monitor's content scale, or --ui-scale) scales the style's sizes and
+// the font, which is rasterised again at the scaled size (not stretched).
 
 struct GLFWwindow;
 struct ImDrawData;
@@ -18,6 +19,10 @@ public:
     ~PanelContext();
 
     bool ok() const { return ok_; }
+    // Dear ImGui's dark style with every size times `scale`, and its default font at 13 * scale
+    // pixels, from the next beginFrame on. 1 at first.
+    void setScale(float scale) { wantedScale_ = scale; }
+    float scale() const { return wantedScale_; }
     void beginFrame();
     // Builds the draw data of the frame; draw it with PanelCache::draw (or ImGui's renderer).
     // Valid until the next beginFrame.
@@ -27,6 +32,9 @@ private:
     bool platformReady_ = false;
     bool rendererReady_ = false;
     bool ok_ = false;
+    bool framesBegun_ = false; // the renderer has made its font texture (at its first frame)
+    float wantedScale_ = 1.0f;
+    float scale_ = 0.0f; // the scale applied; 0: none yet
 };
 
 } // namespace raylab::viewer

@@ -3,16 +3,16 @@
 namespace raylab::viewer {
 
 void PictureReadouts::update(GLFWwindow* window, const InputEvents& events, bool panelHasMouse,
-                             int framebufferWidth, int framebufferHeight, const ShownImage& shown) {
+                             const PixelBox& area, const ShownImage& shown) {
     const int width = shown.bgra.width;
     const int height = shown.bgra.height;
-    drag_.update(window, events.rectanglePressed && !panelHasMouse, framebufferWidth,
-                 framebufferHeight, width, height, rectangle_);
+    drag_.update(window, events.rectanglePressed && !panelHasMouse, area, width, height,
+                 rectangle_);
     if (!panelHasMouse) {
         double x = 0.0, y = 0.0;
         cursorInPixels(window, x, y);
         int px = 0, py = 0;
-        if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, width, height, px, py)) {
+        if (pixelUnderCursor(x, y, area, width, height, px, py)) {
             if (auto read = readPixel(shown, px, py)) {
                 hover_ = read;
             }

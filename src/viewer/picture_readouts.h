@@ -15,10 +15,10 @@ namespace raylab::viewer {
 
 class PictureReadouts {
 public:
-    // This frame's `events`; `panelHasMouse`: ImGui wants the mouse. `shown` covers the whole
-    // framebuffer.
+    // This frame's `events`; `panelHasMouse`: ImGui wants the mouse. `shown` is shown over the
+    // framebuffer's box `area` (view_layout.h).
     void update(GLFWwindow* window, const InputEvents& events, bool panelHasMouse,
-                int framebufferWidth, int framebufferHeight, const ShownImage& shown);
+                const PixelBox& area, const ShownImage& shown);
 
     // The last pixel read under the cursor (kept when the cursor leaves the picture).
     const std::optional<PixelReadout>& hover() const { return hover_; }

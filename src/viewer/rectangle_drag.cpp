@@ -9,9 +9,8 @@
 
 namespace raylab::viewer {
 
-bool RectangleDrag::update(GLFWwindow* window, bool start, int framebufferWidth,
-                           int framebufferHeight, int width, int height,
-                           std::optional<PixelRectangle>& rectangle) {
+bool RectangleDrag::update(GLFWwindow* window, bool start, const PixelBox& area, int width,
+                           int height, std::optional<PixelRectangle>& rectangle) {
     if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS && !start) {
         dragging_ = false;
         return false;
@@ -21,11 +20,16 @@ bool RectangleDrag::update(GLFWwindow* window, bool start, int framebufferWidth,
     }
     double x = 0.0, y = 0.0;
     cursorInPixels(window, x, y);
-    // The cursor held inside the framebuffer, so a drag past an edge ends at the edge's pixels.
-    x = std::clamp(x, 0.0, std::max(static_cast<double>(framebufferWidth) - 1.0, 0.0));
-    y = std::clamp(y, 0.0, std::max(static_cast<double>(framebufferHeight) - 1.0, 0.0));
+    // A drag that goes on past the picture's edge (over the panel, out of the window) ends at
+    // the edge's pixels; a press must be on the picture.
+    if (!start) {
+        x = std::clamp(x, static_cast<double>(area.x),
+                       std::max(static_cast<double>(area.x + area.width) - 1.0, 0.0));
+        y = std::clamp(y, static_cast<double>(area.y),
+                       std::max(static_cast<double>(area.y + area.height) - 1.0, 0.0));
+    }
     int px = 0, py = 0;
-    if (!pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, width, height, px, py)) {
+    if (!pixelUnderCursor(x, y, area, width, height, px, py)) {
         dragging_ = false;
         return false;
     }

@@ -4,6 +4,7 @@
 // released; the rectangle then stays until the next one.
 
 #include "pixel_readout.h"
+#include "view_layout.h"
 
 #include <optional>
 
@@ -14,10 +15,11 @@ namespace raylab::viewer {
 class RectangleDrag {
 public:
     // `start`: a Shift + left press outside the panel happened now. The picture is width x height
-    // pixels over the whole framebuffer. Updates `rectangle` (picture pixels) while dragging;
-    // returns whether a drag is under way (then the press is not the camera's).
-    bool update(GLFWwindow* window, bool start, int framebufferWidth, int framebufferHeight,
-                int width, int height, std::optional<PixelRectangle>& rectangle);
+    // pixels shown over the framebuffer's box `area` (view_layout.h). Updates `rectangle`
+    // (picture pixels) while dragging; returns whether a drag is under way (then the press is
+    // not the camera's).
+    bool update(GLFWwindow* window, bool start, const PixelBox& area, int width, int height,
+                std::optional<PixelRectangle>& rectangle);
 
 private:
     bool dragging_ = false;

@@ -37,6 +37,7 @@
 #include "settings_edit.h"
 #include "settings_history.h"
 #include "split_view.h"
+#include "view_layout.h"
 
 #include <GLFW/glfw3.h>
 
@@ -62,9 +63,26 @@ void waitForEvents(Clock::time_point until) {
 
 bool isLabBox(const LoadedScene& scene) { return isLabBoxName(scene.source); }
 
-// Render resolution for a framebuffer side: side * scale, at least 1 and at most the maximum.
-int renderSide(int framebufferSide, float scale) {
-    const long side = std::lround(static_cast<double>(framebufferSide) * scale);
+// Clears to black what the picture does not cover: the panel's column (the panel's cache draws
+// only the pixels the panel covers), and before the first picture the whole framebuffer.
+void clearUncovered(const ViewLayout& layout, bool pictureDrawn) {
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    if (!pictureDrawn) {
+        glDisable(GL_SCISSOR_TEST);
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else if (layout.panelShown()) {
+        const GlBox column = glBox(layout.panel, layout.framebufferHeight);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(column.x, column.y, column.width, column.height);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+    }
+}
+
+// Render resolution for a side of the picture's box: side * scale, at least 1 and at most the
+// maximum.
+int renderSide(int pictureSide, float scale) {
+    const long side = std::lround(static_cast<double>(pictureSide) * scale);
     return static_cast<int>(std::clamp(side, 1L, static_cast<long>(kMaxImageSide)));
 }
 
@@ -102,13 +120,12 @@ void applyHeldKeys(const std::vector<NavKeyChange>& changes, bool panelHasKeyboa
 }
 
 // The mouse drag's turn since its last update applied to `settings`; `start`: a press outside
-// the panel happened now.
-void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferHeight,
+// the panel happened now. The picture is pictureHeight framebuffer pixels high.
+void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int pictureHeight,
                RenderSettings& settings) {
     float yaw = 0.0f, pitch = 0.0f;
     drag.update(window, start,
-                settings.camera.verticalFovDegrees /
-                    static_cast<float>(std::max(framebufferHeight, 1)),
+                settings.camera.verticalFovDegrees / static_cast<float>(std::max(pictureHeight, 1)),
                 yaw, pitch);
     if (yaw != 0.0f || pitch != 0.0f) {
         turnCamera(yaw, pitch, settings);
@@ -116,13 +133,13 @@ void applyDrag(GLFWwindow* window, MouseDrag& drag, bool start, int framebufferH
 }
 
 // Keys, wheel and drag of this frame (at `now`) applied to the settings (those ImGui wants go to
-// ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h).
+// ImGui). Navigation keys move by a step per press and smoothly while held (held_keys.h). The
+// picture is shown over the framebuffer's box `picture` (view_layout.h).
 void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* window, float step,
-                int framebufferWidth, int framebufferHeight, HeldKeys& held, MouseDrag& drag,
-                DividerDrag& dividerDrag, PanelState& panel, bool& showPanel, int& screenshots,
-                bool& meanIndirectWanted, bool& inspectWanted, bool& showKeys, bool& observerWanted,
-                SettingsHistory& history, const LoadedScene& scene, OrbitControls& orbit,
-                bool& quit) {
+                const PixelBox& picture, HeldKeys& held, MouseDrag& drag, DividerDrag& dividerDrag,
+                PanelState& panel, bool& showPanel, int& screenshots, bool& meanIndirectWanted,
+                bool& inspectWanted, bool& showKeys, bool& observerWanted, SettingsHistory& history,
+                const LoadedScene& scene, OrbitControls& orbit, bool& quit) {
     const ImGuiIO& io = ImGui::GetIO();
     applyHeldKeys(events.navKeys, io.WantCaptureKeyboard, now, step, held, panel.settings);
     RenderSettings next = panel.settings;
@@ -190,19 +207,17 @@ void applyInput(const InputEvents& events, Clock::time_point now, GLFWwindow* wi
         double x = 0.0, y = 0.0;
         cursorInPixels(window, x, y);
         int px = 0, py = 0;
-        if (pixelUnderCursor(x, y, framebufferWidth, framebufferHeight, panel.settings.width,
-                             panel.settings.height, px, py)) {
+        if (pixelUnderCursor(x, y, picture, panel.settings.width, panel.settings.height, px, py)) {
             panel.inspected = InspectedPixel{px, py, panel.settings.camera, panel.settings.width,
                                              panel.settings.height};
             inspectWanted = true;
         }
     }
-    applyOrbitAndPan(events, io.WantCaptureMouse, window, scene, framebufferWidth,
-                     framebufferHeight, orbit, next);
+    applyOrbitAndPan(events, io.WantCaptureMouse, window, scene, picture, orbit, next);
     const bool press = events.leftPressed && !io.WantCaptureMouse;
     const bool onDivider = panel.split && panel.compareMode == CompareMode::Wipe &&
-                           dividerDrag.update(window, press, framebufferWidth, panel.divider);
-    applyDrag(window, drag, press && !onDivider, framebufferHeight, next);
+                           dividerDrag.update(window, press, picture, panel.divider);
+    applyDrag(window, drag, press && !onDivider, picture.height, next);
     std::string ignored;
     acceptEdit(next, panel.settings, ignored);
 }
@@ -264,9 +279,44 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         std::fprintf(stderr, "raylab: %s\n", error.c_str());
         return 1;
     }
+    bool showPanel = options.showPanel;
+    // The panel's scale (--ui-scale, else the window's content scale per framebuffer scale) and
+    // its column's width at scale 1 (a drag of its edge changes it).
+    const auto monitorUiScale = [&] {
+        float x = 1.0f, y = 1.0f;
+        glfwGetWindowContentScale(window.handle(), &x, &y);
+        return options.uiScale > 0.0f ? options.uiScale
+                                      : uiScaleFor(std::max(x, y), window.framebufferScale());
+    };
+    float uiScale = monitorUiScale();
+    float panelUnits = kPanelColumnWidth;
+    // The window's size (screen coordinates) that shows a picture of width x height pixels with
+    // the panel's column, when shown, beside it.
+    const auto sizeWindowFor = [&](int width, int height) {
+        const float perPixel = 1.0f / window.framebufferScale();
+        const int column = showPanel ? scaledPixels(panelUnits, uiScale, 1.0f) : 0;
+        glfwSetWindowSize(window.handle(),
+                          scaledPixels(static_cast<float>(width), 1.0f, perPixel) + column,
+                          scaledPixels(static_cast<float>(height), 1.0f, perPixel));
+    };
+    // The window was opened at the picture's size: make room for the panel before it shows.
+    if (showPanel) {
+        int width = 0, height = 0;
+        glfwGetWindowSize(window.handle(), &width, &height);
+        glfwSetWindowSize(window.handle(), width + scaledPixels(panelUnits, uiScale, 1.0f), height);
+    }
+    window.show();
+    // This frame's layout (view_layout.h): the panel's column and the picture's box.
+    const auto layoutOf = [&](int framebufferWidth, int framebufferHeight) {
+        const float f = window.framebufferScale();
+        return viewLayout(framebufferWidth, framebufferHeight, showPanel,
+                          scaledPixels(panelUnits, uiScale, f),
+                          scaledPixels(kMinPanelColumnWidth, uiScale, f));
+    };
     InputCollector input;
     input.attach(window.handle()); // before ImGui, whose callbacks chain to these
     PanelContext gui(window.handle());
+    gui.setScale(uiScale);
     ImageQuad quad;
     PanelCache panelCache;
     OverlayLines overlayLines;
@@ -288,7 +338,6 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     panel.split = command.split >= 0.0f;
     panel.bookmarks = command.bookmarks;
     panel.divider = panel.split ? command.split : 0.5f;
-    bool showPanel = options.showPanel;
     bool showKeys = false; // the list of keys and mouse gestures (H)
     // The observer view (O) and the undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y) of the camera
     // being moved.
@@ -356,6 +405,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     auto minimisedSince = previousFrameTime;
     bool pictureToUpload = false;        // shown holds a picture not uploaded yet
     int drawnWidth = 0, drawnHeight = 0; // the framebuffer's size at the last frame
+    ViewLayout layout;                   // the panel's column and the picture's box, this frame
 
     for (;;) {
         // Minimised, nothing is drawn, so frames wanted meanwhile must not end the wait.
@@ -377,10 +427,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             applyHeldKeys(input.takeNavKeys(), ImGui::GetIO().WantCaptureKeyboard, wokeAt, step,
                           held, panel.settings);
             if (drag.dragging()) {
-                int framebufferWidth = 0, framebufferHeight = 0;
-                window.framebufferSize(framebufferWidth, framebufferHeight);
                 RenderSettings turned = panel.settings;
-                applyDrag(window.handle(), drag, false, framebufferHeight, turned);
+                applyDrag(window.handle(), drag, false, layout.picture.height, turned);
                 std::string ignored;
                 acceptEdit(turned, panel.settings, ignored);
             }
@@ -456,6 +504,12 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         schedule.frameStarted(wokeAt);
 
+        // Another monitor's content scale: the panel's font and sizes follow (not --ui-scale's).
+        if (input.pending().contentScale) {
+            uiScale = monitorUiScale();
+            gui.setScale(uiScale);
+        }
+        layout = layoutOf(fbWidth, fbHeight);
         gui.beginFrame();
         if (pictureToUpload) {
             quad.upload(shown.bgra);
@@ -503,7 +557,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             }
             panel.bookmarks = extras.bookmarks;
             panel.resolutionScale = 1.0f;
-            glfwSetWindowSize(window.handle(), restored.width, restored.height);
+            sizeWindowFor(restored.width, restored.height);
             const std::string restoredScene = extras.scene.empty() ? scene->source : extras.scene;
             if (restoredScene == scene->source) {
                 observer.leave(panel.settings);
@@ -526,10 +580,10 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             events.keys.erase(escape);
             cancelLoad();
         }
-        applyInput(events, wokeAt, window.handle(), step, fbWidth, fbHeight, held, drag,
-                   dividerDrag, panel, showPanel, screenshots, meanIndirectWanted, inspectWanted,
-                   showKeys, observerWanted, observer.history(), *scene, orbit, quit);
-        readouts.update(window.handle(), events, ImGui::GetIO().WantCaptureMouse, fbWidth, fbHeight,
+        applyInput(events, wokeAt, window.handle(), step, layout.picture, held, drag, dividerDrag,
+                   panel, showPanel, screenshots, meanIndirectWanted, inspectWanted, showKeys,
+                   observerWanted, observer.history(), *scene, orbit, quit);
+        readouts.update(window.handle(), events, ImGui::GetIO().WantCaptureMouse, layout.picture,
                         shown);
         // The inspected pixel's numbers, for the panel (a few rays, on this thread); printed as
         // JSON (raylab-render --inspect's) on standard output when a click asks, for scripts.
@@ -543,9 +597,13 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 std::fflush(stdout);
             }
         }
-        if (showPanel) {
+        if (layout.panelShown()) { // F1 hides it; a window too narrow for it has none
             panelNumbers.update(numbers, wokeAt);
             PanelView view;
+            const float perUnit = window.framebufferScale(); // framebuffer pixels per unit
+            view.width = static_cast<float>(layout.panel.width) / perUnit;
+            view.minWidth = kMinPanelColumnWidth * uiScale;
+            view.maxWidth = static_cast<float>(fbWidth - 1) / perUnit; // a pixel of picture
             view.sceneName = scene->source;
             view.triangles = scene->scene.triangles.size();
             view.loading = loader.progress();
@@ -565,6 +623,10 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 panel.settings, io.WantCaptureMouse || io.WantCaptureKeyboard, wokeAt);
             const RenderSettings offered = drawn.settings;
             const PanelActions actions = drawPanel(drawn, view);
+            if (actions.resizedTo > 0.0f) { // its edge dragged: the picture gets the rest
+                panelUnits = actions.resizedTo / uiScale;
+                layout = layoutOf(fbWidth, fbHeight);
+            }
             const RenderSettings live = panel.settings;
             panel = std::move(drawn); // its text fields and messages
             if (panel.settings == offered) {
@@ -609,9 +671,9 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             }
         }
 
-        // The job: the panel's settings at the framebuffer's resolution times the scale.
-        panel.settings.width = renderSide(fbWidth, panel.resolutionScale);
-        panel.settings.height = renderSide(fbHeight, panel.resolutionScale);
+        // The job: the panel's settings at the picture box's resolution times the scale.
+        panel.settings.width = renderSide(layout.picture.width, panel.resolutionScale);
+        panel.settings.height = renderSide(layout.picture.height, panel.resolutionScale);
         observer.history().observe(panel.settings, wokeAt);
         submitSettings();
         // A picture of the current job that settings reproduce exactly.
@@ -621,14 +683,11 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                                 (!needsFinal || (current && shown.final));
         const bool finalFrame = quit || scriptEnds;
 
-        if (!quad.hasImage()) { // the picture, when there is one, covers every pixel
-            glViewport(0, 0, fbWidth, fbHeight);
-            glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
-        }
-        quad.draw(fbWidth, fbHeight);
+        // The picture, when there is one, covers every pixel of its box.
+        clearUncovered(layout, quad.hasImage());
+        quad.draw(layout);
         if (shown.compare && shown.compareMode == CompareMode::Wipe) {
-            drawDivider(splitColumn(fbWidth, shown.divider), fbHeight);
+            drawDivider(layout, splitColumn(layout.picture.width, shown.divider));
         }
         if (const auto lab = observer.keptLabCamera(); lab && shown.bgra.width > 0) {
             // The lab camera and the light, seen with the camera of the picture shown (the
@@ -637,7 +696,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                                               shown.bgra.height, *lab, panel.settings.width,
                                               panel.settings.height, panel.settings.light,
                                               scene->scene.bounds(), kNearDepthPerStep * step),
-                              shown.bgra.width, shown.bgra.height, fbWidth, fbHeight);
+                              shown.bgra.width, shown.bgra.height, layout);
         }
         if (inspection && shown.bgra.width > 0 && shown.bgra.height > 0) {
             // Its rays, pinned in the world, seen with the camera of the picture shown (so they
@@ -649,15 +708,15 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
                 projectSegments(PrimaryRays(picture.camera, picture.width, picture.height),
                                 picture.width, picture.height, kNearDepthPerStep * step,
                                 inspectionSegments(*inspection, panel.inspected->camera.position));
-            overlayLines.draw(rays, picture.width, picture.height, fbWidth, fbHeight);
+            overlayLines.draw(rays, picture.width, picture.height, layout);
             if (seenAsPicked(picture, *panel.inspected)) {
-                drawPixelMarker(panel.inspected->x, panel.inspected->y, picture.width,
-                                picture.height, fbWidth, fbHeight);
+                drawPixelMarker(layout, panel.inspected->x, panel.inspected->y, picture.width,
+                                picture.height);
             }
         }
         if (const auto& r = readouts.rectangle()) {
-            drawPixelRectangle(r->x0, r->y0, r->x1, r->y1, shown.bgra.width, shown.bgra.height,
-                               fbWidth, fbHeight);
+            drawPixelRectangle(layout, r->x0, r->y0, r->x1, r->y1, shown.bgra.width,
+                               shown.bgra.height);
         }
         if (screenshots > 0 && current && !shown.linear.pixels.empty()) {
             std::string path;
@@ -669,8 +728,14 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
             }
             screenshots = 0;
         }
-        if (showKeys) {
-            drawKeyList();
+        if (showKeys) { // centred on the picture
+            const float perUnit = window.framebufferScale();
+            drawKeyList((static_cast<float>(layout.picture.x) +
+                         0.5f * static_cast<float>(layout.picture.width)) /
+                            perUnit,
+                        (static_cast<float>(layout.picture.y) +
+                         0.5f * static_cast<float>(layout.picture.height)) /
+                            perUnit);
         }
         panelCache.draw(gui.endFrame(), fbWidth, fbHeight);
         keys.frameEnded();

@@ -1,5 +1,8 @@
 #include "viewer_options.h"
 
+#include "view_layout.h"
+
+#include <cmath>
 #include <cstdlib>
 #include <string_view>
 #include <vector>
@@ -18,6 +21,23 @@ bool hasFlag(const std::vector<const char*>& args, std::string_view flag) {
         }
     }
     return false;
+}
+
+// The value after the flag at argv[i], a finite number in [least, most], into `value`; i moves
+// past it. False when it is missing or not such a number.
+bool scaleValue(int argc, const char* const* argv, int& i, float least, float most, float& value) {
+    if (i + 1 >= argc) {
+        return false;
+    }
+    const char* text = argv[++i];
+    char* end = nullptr;
+    const float read = std::strtof(text, &end);
+    if (end == text || *end != '\0' || !std::isfinite(read) || !(read >= least) ||
+        !(read <= most)) {
+        return false;
+    }
+    value = read;
+    return true;
 }
 
 } // namespace
@@ -48,16 +68,16 @@ int parseViewerOptions(int argc, const char* const* argv, ViewerOptions& options
                 return 2;
             }
             options.stats = argv[++i];
+        } else if (i > 0 && arg == "--ui-scale") {
+            if (!scaleValue(argc, argv, i, kMinUiScale, kMaxUiScale, options.uiScale)) {
+                error = "--ui-scale needs a number in [0.5, 4]";
+                return 2;
+            }
         } else if (i > 0 && arg == "--resolution-scale") {
-            char* end = nullptr;
-            const float scale = i + 1 < argc ? std::strtof(argv[i + 1], &end) : 0.0f;
-            if (i + 1 >= argc || end == argv[i + 1] || *end != '\0' || !(scale >= 0.1f) ||
-                !(scale <= 1.0f)) {
+            if (!scaleValue(argc, argv, i, 0.1f, 1.0f, options.resolutionScale)) {
                 error = "--resolution-scale needs a number in [0.1, 1]";
                 return 2;
             }
-            options.resolutionScale = scale;
-            ++i;
         } else {
             shared.push_back(argv[i]);
         }
@@ -87,7 +107,9 @@ std::string viewerUsage() {
     return usage(Program::Viewer) +
            "\nViewer only:\n"
            "  --no-panel         start with the panel hidden (F1 toggles it)\n"
-           "  --resolution-scale S  render at the window's size times S, 0.1..1 (default 1)\n"
+           "  --resolution-scale S  render at the picture's size times S, 0.1..1 (default 1)\n"
+           "  --ui-scale S       the panel's scale (font and sizes), 0.5..4, instead of the\n"
+           "                     monitor's content scale\n"
            "  --readback FILE    test mode: with --frames, also save what the window shows (read\n"
            "                     back from the GL framebuffer) of the last frame as PNG\n"
            "  --stats FILE       on quitting, write the window's frame rate, the tracer's pass\n"

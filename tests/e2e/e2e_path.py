@@ -6,7 +6,7 @@ import os
 import struct
 import time
 
-from e2e_support import Viewer, check, same_pixels
+from e2e_support import PANEL_COLUMN, Viewer, check, same_pixels
 from pngread import read_png
 
 SIZE = ["--width", "200", "--height", "200"]  # square: every ray of the lab's camera hits the box
@@ -111,7 +111,8 @@ def test_inspect(env):
     size = ["--width", "480", "--height", "360"]
     viewer = Viewer(env, size + ["--spp", "2"])
     try:
-        viewer.xdotool("mousemove", "--window", viewer.window, "390", "200")
+        # The picture's pixel (390, 200), right of the panel's column.
+        viewer.xdotool("mousemove", "--window", viewer.window, str(PANEL_COLUMN + 390), "200")
         viewer.xdotool("keydown", "ctrl", "click", "1", "keyup", "ctrl")
         _, settings = viewer.key_shot("v")
         check(settings["display"]["view"] == "albedo", f"V gave the view {settings['display']}")
@@ -184,16 +185,17 @@ def test_orbit(env):
     viewer = Viewer(env, size + ["--spp", "2"])
     try:
         w = viewer.window
-        viewer.xdotool("mousemove", "--window", w, "390", "200", "mousedown", "3")
+        x = PANEL_COLUMN  # the picture's left edge in the window
+        viewer.xdotool("mousemove", "--window", w, str(x + 390), "200", "mousedown", "3")
         time.sleep(0.2)
-        viewer.xdotool("mousemove", "--window", w, "430", "180")
+        viewer.xdotool("mousemove", "--window", w, str(x + 430), "180")
         time.sleep(0.2)
         viewer.xdotool("mouseup", "3")
         time.sleep(0.3)
         _, orbited = viewer.key_shot()
-        viewer.xdotool("mousemove", "--window", w, "400", "200", "mousedown", "2")
+        viewer.xdotool("mousemove", "--window", w, str(x + 400), "200", "mousedown", "2")
         time.sleep(0.2)
-        viewer.xdotool("mousemove", "--window", w, "420", "220")
+        viewer.xdotool("mousemove", "--window", w, str(x + 420), "220")
         time.sleep(0.2)
         viewer.xdotool("mouseup", "2")
         time.sleep(0.3)

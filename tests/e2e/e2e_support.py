@@ -10,8 +10,12 @@ import time
 
 from pngread import read_png
 
-PANEL_BUTTON = (100, 44)  # window coordinates inside the panel's "Save screenshot" button
-PATH_FIELD = (120, 67)  # window coordinates inside the panel's scene path field
+# The panel's column at the window's left edge (src/viewer/view_layout.h, kPanelColumnWidth at UI
+# scale 1): with the panel shown, the picture's pixel (x, y) is at window point (PANEL_COLUMN + x,
+# y), and the window is PANEL_COLUMN wider than --width.
+PANEL_COLUMN = 360
+PANEL_BUTTON = (100, 17)  # window coordinates inside the panel's "Save screenshot" button
+PATH_FIELD = (120, 40)  # window coordinates inside the panel's scene path field
 
 
 class Failure(Exception):

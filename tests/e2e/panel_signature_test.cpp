@@ -68,19 +68,11 @@ TEST(ViewerPanelSignature, SamePanelSameSignatureAndChangesShow) {
     EXPECT_EQ(panelFrame(state, view), first) << "an unchanged panel changed its draw data";
     EXPECT_EQ(panelFrame(state, view), first);
 
-    // Bounds: the panel's place and width (kPanelX, kPanelY, kPanelWidth), nothing far beyond.
-    const PixelRect& b = first.bounds;
-    EXPECT_FALSE(b.empty());
-    EXPECT_LE(b.x0, static_cast<int>(kPanelX));
-    EXPECT_LE(b.y0, static_cast<int>(kPanelY));
-    EXPECT_GE(b.x0, static_cast<int>(kPanelX) - 4);
-    EXPECT_GE(b.x1, static_cast<int>(kPanelX + kPanelWidth));
-    EXPECT_LE(b.x1, static_cast<int>(kPanelX + kPanelWidth) + 4);
-    EXPECT_GT(b.y1, 200);
-    EXPECT_LT(b.y1, 720);
+    // Bounds: the panel's column (the left edge, its width, the display's height), no more.
+    EXPECT_EQ(first.bounds, (PixelRect{0, 0, static_cast<int>(kPanelColumnWidth), 720}));
 
     // The mouse over the screenshot button highlights it (the viewer re-renders in that frame).
-    ImGui::GetIO().MousePos = ImVec2(100.0f, 44.0f);
+    ImGui::GetIO().MousePos = ImVec2(100.0f, 17.0f);
     const PanelSignature hovered = panelFrame(state, view);
     EXPECT_NE(hovered.hash, first.hash);
     EXPECT_EQ(settled(state, view), hovered);
@@ -101,6 +93,20 @@ TEST(ViewerPanelSignature, SamePanelSameSignatureAndChangesShow) {
     // Another display size: another signature, even where the panel looks the same.
     ImGui::GetIO().DisplaySize = ImVec2(1000.0f, 720.0f);
     EXPECT_NE(settled(state, view).hash, plotted.hash);
+}
+
+TEST(ViewerPanelSignature, ThePanelFillsTheColumnItIsGiven) {
+    HeadlessImGui imgui;
+    PanelState state;
+    PanelView view;
+    ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    view.width = 720.0f; // a column twice as wide, as at UI scale 2
+    view.maxWidth = 1000.0f;
+    EXPECT_EQ(settled(state, view).bounds, (PixelRect{0, 0, 720, 720}));
+    // Dragged by nobody, the panel reports no resize.
+    ImGui::NewFrame();
+    EXPECT_EQ(drawPanel(state, view).resizedTo, 0.0f);
+    ImGui::Render();
 }
 
 TEST(ViewerPanelSignature, NothingDrawnHasEmptyBounds) {

@@ -25,14 +25,14 @@ from e2e_import import test_import_cancel, test_import_failures, test_import_qui
 from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_observer import test_observer  # noqa: E402
-from e2e_panel import test_panel  # noqa: E402
+from e2e_panel import test_panel, test_panel_edge, test_panel_scale  # noqa: E402
 from e2e_path import (test_bookmarks, test_drop, test_inspect, test_mean_n,  # noqa: E402
                       test_orbit, test_snapshot, test_split, test_undo)
 from e2e_scene_path import test_browse, test_scene_path  # noqa: E402
 from e2e_stats import test_idle, test_stats  # noqa: E402
 from e2e_teach import test_difference, test_hover_readout, test_ray_overlay  # noqa: E402
-from e2e_support import (PANEL_BUTTON, Env, Failure, Viewer, check, close,  # noqa: E402
-                         distinct_colours, same_pixels, vec)
+from e2e_support import (PANEL_BUTTON, PANEL_COLUMN, Env, Failure, Viewer, check,  # noqa: E402
+                         close, distinct_colours, same_pixels, vec)
 
 SKIP = 77
 STEP = 0.1  # core's navigationStep for the lab's box
@@ -53,6 +53,12 @@ def test_bad_input(env):
     check(result.returncode == 2, f"--fov nan: exit {result.returncode}, expected 2")
     result = env.run(env.raylab, ["--readback"])
     check(result.returncode == 2, f"--readback without file: exit {result.returncode}")
+    for scale in (["nan"], ["inf"], ["0.4"], ["4.5"], ["2x"], []):
+        result = env.run(env.raylab, ["--ui-scale"] + scale + ["--frames", "1"])
+        check(result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1 and
+              "--ui-scale" in result.stderr,
+              f"--ui-scale {scale}: exit {result.returncode}, {result.stderr!r}; expected one "
+              f"line and exit 2")
     result = env.run(env.raylab, [env.path("missing.obj"), "--frames", "1"])
     check(result.returncode == 1, f"missing scene: exit {result.returncode}, expected 1")
     check(len(result.stderr.strip().splitlines()) == 1,
@@ -259,7 +265,9 @@ def test_mouse(env):
 
 
 def test_resize(env):
-    """Resizing the window to 1 x 1 and back leaves it rendering at the new sizes."""
+    """Resizing the window to 1 x 1 and back leaves it rendering at the new sizes: the picture
+    is the window less the panel's column (at 1 x 1 there is no room for the panel and the
+    picture is the window's one pixel)."""
     viewer = Viewer(env, ["--width", "400", "--height", "300", "--spp", "2"])
     try:
         first, _ = viewer.key_shot()
@@ -268,7 +276,7 @@ def test_resize(env):
         tiny, s = viewer.shot_when(lambda png, s: (png.width, png.height) == (1, 1),
                                    "no 1 x 1 screenshot after resizing to 1 x 1")
         check(s["image"]["width"] == 1, f"at 1 x 1 the JSON says {s['image']}")
-        viewer.xdotool("windowsize", viewer.window, "360", "280")
+        viewer.xdotool("windowsize", viewer.window, str(PANEL_COLUMN + 360), "280")
         back, s = viewer.shot_when(lambda png, s: (png.width, png.height) == (360, 280),
                                    "no 360 x 280 screenshot after resizing back")
         check(s["image"]["height"] == 280, f"after resizing back the JSON says {s['image']}")
@@ -311,6 +319,8 @@ TESTS = {
     "stats": (test_stats, True),
     "idle": (test_idle, True),
     "panel": (test_panel, True),
+    "panel_scale": (test_panel_scale, True),
+    "panel_edge": (test_panel_edge, True),
     "mean_n": (test_mean_n, True),
     "split": (test_split, True),
     "inspect": (test_inspect, True),
