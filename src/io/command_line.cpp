@@ -15,7 +15,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <initializer_list>
 #include <sstream>
 #include <vector>
 
@@ -85,6 +87,29 @@ Handler benchFraction(float BenchOptions::*field) {
             return "expected a fraction >= 0, got " + quoted(value);
         }
         s.out.bench.*field = v;
+        return {};
+    };
+}
+
+Handler viewerScale(float lo, float hi, float ViewerFlags::*field) {
+    return [=](const std::string& value, ParseState& s) -> std::string {
+        float v = 0.0f;
+        if (!parseFloat(value, v) || !(v >= lo) || !(v <= hi)) {
+            char range[64];
+            std::snprintf(range, sizeof range, "a number in [%g, %g]", lo, hi);
+            return "expected " + std::string(range) + ", got " + quoted(value);
+        }
+        s.out.viewer.*field = v;
+        return {};
+    };
+}
+
+Handler viewerFile(std::string ViewerFlags::*field) {
+    return [=](const std::string& value, ParseState& s) -> std::string {
+        if (value.empty()) {
+            return "expected a file name";
+        }
+        s.out.viewer.*field = value;
         return {};
     };
 }
@@ -501,6 +526,29 @@ const std::vector<Option>& options() {
              s.out.screenshotDir = v;
              return {};
          }},
+        {"--no-panel", nullptr, kViewer, "start with the panel hidden (F1 toggles it)",
+         [](const std::string&, ParseState& s) -> std::string {
+             s.out.viewer.showPanel = false;
+             return {};
+         }},
+        {"--resolution-scale", "S", kViewer,
+         "render at the picture's size times S, 0.1..1 (default 1)",
+         viewerScale(0.1f, 1.0f, &ViewerFlags::resolutionScale)},
+        {"--ui-scale", "S", kViewer,
+         "the panel's scale (font and sizes), 0.5..4, instead of the monitor's content scale",
+         viewerScale(kMinUiScale, kMaxUiScale, &ViewerFlags::uiScale)},
+        {"--readback", "FILE", kViewer,
+         "test mode: with --frames, also save what the window shows (read back from the GL "
+         "framebuffer) of the last frame as PNG",
+         viewerFile(&ViewerFlags::readback)},
+        {"--stats", "FILE", kViewer,
+         "on quitting, write the window's frame rate, the tracer's pass times and the panel's "
+         "last readouts (JSON) to FILE",
+         viewerFile(&ViewerFlags::stats)},
+        {"--drop", "FILE", kViewer,
+         "once the window shows, act as if FILE were dropped on it (a mesh opens; a raylab "
+         "screenshot's .png or .json restores it)",
+         viewerFile(&ViewerFlags::drop)},
         {"--json", nullptr, kBench, "print the results as JSON",
          [](const std::string&, ParseState& s) -> std::string {
              s.out.json = true;
@@ -673,12 +721,26 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
         }
     }
 
-    if (program == Program::Bench && std::none_of(words.begin(), words.end(), [](const Word& w) {
-            return std::string(w.option->name) == "--width" ||
-                   std::string(w.option->name) == "--height";
-        })) {
+    // Each program's defaults where neither a flag nor (for the viewer) the settings file gave
+    // them.
+    const auto given = [&words](std::initializer_list<const char*> names) {
+        return std::any_of(words.begin(), words.end(), [&](const Word& w) {
+            return std::any_of(names.begin(), names.end(),
+                               [&](const char* n) { return std::string(w.option->name) == n; });
+        });
+    };
+    if (program == Program::Bench && !given({"--width", "--height"})) {
         result.settings.width = kBenchWidth;
         result.settings.height = kBenchHeight;
+    }
+    if (program == Program::Viewer && settingsFile.empty()) {
+        if (!given({"--spp"})) {
+            result.settings.samplesPerPixel = kViewerSampleCap;
+        }
+        if (!given({"--width", "--height"})) {
+            result.settings.width = kViewerWidth;
+            result.settings.height = kViewerHeight;
+        }
     }
 
     // Pass 2: every other option, in order.
@@ -713,6 +775,10 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
     if (program == Program::Render && result.output.empty() && !result.inspect &&
         result.partial.empty() && result.saveFrames.empty()) {
         error = "missing output file (-o FILE or --partial FILE.exr; see --help)";
+        return 2;
+    }
+    if (!result.viewer.readback.empty() && result.frames <= 0) {
+        error = "--readback needs --frames N";
         return 2;
     }
     if (!result.saveFrames.empty() && result.turntable == 0 && result.frameCameras.empty()) {
@@ -783,6 +849,25 @@ std::string usage(Program program) {
         text << "\nraylab-bench traces " << kBenchWidth << "x" << kBenchHeight
              << " unless --width or --height is given.\n";
     } else {
+        if (program == Program::Viewer) {
+            text << "\nThe picture is " << kViewerWidth << "x" << kViewerHeight
+                 << " unless --width, --height or --settings gives it; the window adds the\n"
+                    "panel's column beside it. The sample cap is --spp (default "
+                 << kViewerSampleCap
+                 << "). With --frames N and\n"
+                    "--screenshot or --readback, the viewer shows at least N frames and keeps "
+                    "going until the\n"
+                    "picture has reached the sample cap, then saves and quits.\n"
+                    "Keys: Up/Down move, Left/Right turn, W/S A/D Q/E move the light, mouse drag "
+                    "turns, wheel\n"
+                    "moves, F12 screenshot, F1 panel, Escape quits (or cancels a scene load); H "
+                    "in the window\n"
+                    "lists every key. A key press moves one step; a key held longer than 0.25 s "
+                    "moves smoothly,\n"
+                    "25 steps a second, until released. Dropping a mesh file on the window opens "
+                    "it; dropping a\n"
+                    "raylab screenshot (.png or .json) restores its scene and settings.\n";
+        }
         text << "\nthe lab's steps (--preset NAME):\n";
         for (const LabPreset& preset : labPresets()) {
             text << "  " << preset.name << ": " << preset.shows << "; " << preset.equation << "\n";

@@ -38,6 +38,27 @@ struct BenchOptions {
     std::string embreeIsa;        // --embree-isa NAME; empty: Embree's own choice
 };
 
+// The viewer's sample cap (--spp) and picture size (--width x --height) unless a flag or the
+// --settings file gives them: progressive anti-aliasing instead of the lab's single sample.
+inline constexpr int kViewerSampleCap = 64;
+inline constexpr int kViewerWidth = 1024;
+inline constexpr int kViewerHeight = 640;
+// The range of the viewer's panel scale (--ui-scale, and the monitor's content scale).
+inline constexpr float kMinUiScale = 0.5f;
+inline constexpr float kMaxUiScale = 4.0f;
+
+// The viewer's own options.
+struct ViewerFlags {
+    bool showPanel = true;        // --no-panel starts with the panel hidden (F1 shows it)
+    std::string readback;         // --readback FILE: test mode (with --frames), see viewer_app.h
+    float resolutionScale = 1.0f; // --resolution-scale S in [0.1, 1]: render size = picture * S
+    std::string stats;            // --stats FILE: frame rates and pass times at exit (run_stats.h)
+    std::string drop;             // --drop FILE: acts as FILE dropped on the window
+    // --ui-scale S in [kMinUiScale, kMaxUiScale]: the panel's scale (font and sizes) instead of
+    // the monitor's content scale; 0: the monitor's.
+    float uiScale = 0.0f;
+};
+
 // The instruction sets --embree-isa accepts, as Embree's "isa=" device configuration names them.
 // Embree itself reads an unknown name as SSE2, so the bench refuses one instead.
 bool isEmbreeIsa(const std::string& isa);
@@ -83,6 +104,7 @@ struct CommandLine {
     // The viewer's observer view, from the --settings file's "observer" record: the settings'
     // camera is the observer's, and this the lab camera kept (raylab-render renders the camera).
     std::optional<Camera> observedLabCamera;
+    ViewerFlags viewer;
     // bench
     bool json = false;   // --json
     int benchFrames = 5; // --frames N for the bench: best of N

@@ -2,10 +2,10 @@
 // with one line and exit code 1), and runs the window (viewer_app.h).
 
 #include "io/atomic_file.h"
+#include "io/command_line.h"
 #include "io/load_progress.h"
 #include "loaded_scene.h"
 #include "viewer_app.h"
-#include "viewer_options.h"
 
 #include <csignal>
 #include <cstdio>
@@ -18,18 +18,19 @@ int main(int argc, char** argv) {
     // that went away) fails with EPIPE and is reported (Xlib prints which server and exits)
     // instead of killing the viewer without a word.
     std::signal(SIGPIPE, SIG_IGN);
-    ViewerOptions options;
+    CommandLine command;
     std::string error;
-    if (const int status = parseViewerOptions(argc, argv, options, error); status != 0) {
+    if (const int status = parseCommandLine(argc, argv, Program::Viewer, command, error);
+        status != 0) {
         std::fprintf(stderr, "raylab: %s\n", error.c_str());
         return status;
     }
-    CommandLine& command = options.command;
     if (command.help) {
-        std::fputs(viewerUsage().c_str(), stdout);
+        std::fputs(usage(Program::Viewer).c_str(), stdout);
         return 0;
     }
-    if (std::string why; !options.stats.empty() && !checkWritable(options.stats, why)) {
+    if (std::string why;
+        !command.viewer.stats.empty() && !checkWritable(command.viewer.stats, why)) {
         std::fprintf(stderr, "raylab: %s\n", why.c_str());
         return 1;
     }
@@ -50,5 +51,5 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "raylab: %s\n", why.c_str());
         return 2;
     }
-    return runViewer(options, loaded.scene);
+    return runViewer(command, loaded.scene);
 }

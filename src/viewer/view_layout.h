@@ -9,6 +9,8 @@
 // Boxes are in framebuffer pixels, x to the right and y down from the framebuffer's top, as the
 // cursor (cursorInPixels) and Dear ImGui count; glBox turns one into GL's bottom-up rectangle.
 
+#include "io/command_line.h"
+
 namespace raylab::viewer {
 
 // The panel's column at UI scale 1, in Dear ImGui units (screen coordinates): its width at
@@ -74,9 +76,8 @@ PixelBox intersect(const PixelBox& box, const PixelBox& within);
 // The Dear ImGui scale of the panel for a window whose content scale (glfwGetWindowContentScale)
 // is contentScale and whose framebuffer has framebufferScale pixels per screen coordinate
 // (2 on a macOS Retina screen, where Dear ImGui's coordinates are already points): their ratio,
-// clamped to [kMinUiScale, kMaxUiScale]; 1 for a non-finite or non-positive input.
-inline constexpr float kMinUiScale = 0.5f;
-inline constexpr float kMaxUiScale = 4.0f;
+// clamped to [kMinUiScale, kMaxUiScale] (io/command_line.h, as --ui-scale); 1 for a non-finite or
+// non-positive input.
 float uiScaleFor(float contentScale, float framebufferScale);
 
 } // namespace raylab::viewer

@@ -270,8 +270,8 @@ void setStatus(PanelState& panel, const std::string& text, bool isError) {
 
 } // namespace
 
-int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> scene) {
-    const CommandLine& command = options.command;
+int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> scene) {
+    const ViewerFlags& flags = command.viewer; // the viewer's own options
     GlWindow window;
     std::string error;
     if (!window.open(command.settings.width, command.settings.height, "raylab - " + scene->source,
@@ -279,14 +279,14 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         std::fprintf(stderr, "raylab: %s\n", error.c_str());
         return 1;
     }
-    bool showPanel = options.showPanel;
+    bool showPanel = flags.showPanel;
     // The panel's scale (--ui-scale, else the window's content scale per framebuffer scale) and
     // its column's width at scale 1 (a drag of its edge changes it).
     const auto monitorUiScale = [&] {
         float x = 1.0f, y = 1.0f;
         glfwGetWindowContentScale(window.handle(), &x, &y);
-        return options.uiScale > 0.0f ? options.uiScale
-                                      : uiScaleFor(std::max(x, y), window.framebufferScale());
+        return flags.uiScale > 0.0f ? flags.uiScale
+                                    : uiScaleFor(std::max(x, y), window.framebufferScale());
     };
     float uiScale = monitorUiScale();
     float panelUnits = kPanelColumnWidth;
@@ -334,7 +334,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     PanelState panel;
     panel.settings = command.settings;
     panel.scenePath = scene->source;
-    panel.resolutionScale = options.resolutionScale;
+    panel.resolutionScale = flags.resolutionScale;
     panel.split = command.split >= 0.0f;
     panel.bookmarks = command.bookmarks;
     panel.divider = panel.split ? command.split : 0.5f;
@@ -344,7 +344,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     ObserverView observer(panel.settings, command.observedLabCamera);
     OrbitControls orbit;      // right drag orbits, middle drag pans
     PictureReadouts readouts; // the pixel under the cursor, a Shift + drag rectangle's mean
-    std::string pendingDrop = options.drop;       // --drop FILE, dropped once the window shows
+    std::string pendingDrop = flags.drop;         // --drop FILE, dropped once the window shows
     std::optional<RenderSettings> pendingRestore; // a dropped screenshot's, for its scene
     std::optional<Camera> pendingLab;             // its lab camera, when it is of the observer view
     float step = navigationStep(scene->scene.bounds());
@@ -365,7 +365,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
     bool quit = false;
     int exitCode = 0;
     const bool scripted = command.frames > 0;
-    const bool needsFinal = !command.screenshot.empty() || !options.readback.empty();
+    const bool needsFinal = !command.screenshot.empty() || !flags.readback.empty();
     // Hands the panel's settings to the render thread when they make another job than the last.
     // Every picture comes with its linear picture: the panel reads the pixel under the cursor and
     // a rectangle's mean from it, F12 writes it (.exr) beside the PNG, and PFM and EXR
@@ -739,8 +739,8 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         }
         panelCache.draw(gui.endFrame(), fbWidth, fbHeight);
         keys.frameEnded();
-        if (finalFrame && !options.readback.empty()) {
-            if (!writePng(options.readback, readFramebuffer(fbWidth, fbHeight), error)) {
+        if (finalFrame && !flags.readback.empty()) {
+            if (!writePng(flags.readback, readFramebuffer(fbWidth, fbHeight), error)) {
                 std::fprintf(stderr, "raylab: %s\n", error.c_str());
                 exitCode = 1;
             }
@@ -792,7 +792,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         stats.minimisedSeconds +=
             std::chrono::duration<double>(Clock::now() - minimisedSince).count();
     }
-    if (!options.stats.empty()) {
+    if (!flags.stats.empty()) {
         stats.tracer = worker.totals();
         stats.width = shown.bgra.width;
         stats.height = shown.bgra.height;
@@ -801,7 +801,7 @@ int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> s
         stats.triangles = scene->scene.triangles.size();
         stats.hover = readouts.hover();
         stats.rectangle = readouts.rectangleMean();
-        if (!writeRunStats(options.stats, stats, error)) {
+        if (!writeRunStats(flags.stats, stats, error)) {
             std::fprintf(stderr, "raylab: %s\n", error.c_str());
             exitCode = 1;
         }

@@ -15,8 +15,8 @@
 // framebuffer of that last frame, read back with glReadPixels after drawing, rows from the top.
 // Without --frames, --screenshot saves the last shown finished picture on quitting.
 
+#include "io/command_line.h"
 #include "loaded_scene.h"
-#include "viewer_options.h"
 
 #include <memory>
 
@@ -35,9 +35,10 @@ inline constexpr double kIdleWakeSeconds = 0.5;
 // How often the panel's line of a running load ("loading FILE  3.2 s") is redrawn, in seconds.
 inline constexpr double kLoadClockSeconds = 0.1;
 
-// Opens the window and runs until it closes, Escape, or the script ends. `settings` in options
-// must be valid and already placed for the scene. Returns the process exit code (0, or 1 when the
+// Opens the window and runs until it closes, Escape, or the script ends. The command line's
+// settings must be valid and already placed for the scene; settings.samplesPerPixel is the
+// sample cap. Returns the process exit code (0, or 1 when the
 // window cannot open or a requested file cannot be written).
-int runViewer(const ViewerOptions& options, std::shared_ptr<const LoadedScene> scene);
+int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> scene);
 
 } // namespace raylab::viewer

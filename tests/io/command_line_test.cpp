@@ -264,6 +264,70 @@ TEST(CommandLine, ProgramsHaveTheirOwnFlags) {
     EXPECT_EQ(parse({"--frames", "1", "-o", "x.png"}).code, 2);
 }
 
+TEST(CommandLine, TheViewersOwnOptionsAndDefaults) {
+    const Parsed defaults = parse({}, Program::Viewer);
+    ASSERT_EQ(defaults.code, 0) << defaults.error;
+    EXPECT_EQ(defaults.line.settings.samplesPerPixel, kViewerSampleCap);
+    EXPECT_EQ(defaults.line.settings.width, kViewerWidth);
+    EXPECT_EQ(defaults.line.settings.height, kViewerHeight);
+    EXPECT_TRUE(defaults.line.viewer.showPanel);
+    EXPECT_EQ(defaults.line.viewer.resolutionScale, 1.0f);
+    EXPECT_EQ(defaults.line.viewer.uiScale, 0.0f); // the monitor's
+
+    const Parsed given = parse({"--no-panel", "--resolution-scale", "0.5", "--ui-scale=2",
+                                "--readback", "r.png", "--frames", "3", "--stats", "s.json",
+                                "--drop", "d.obj", "--spp", "8", "--width", "200"},
+                               Program::Viewer);
+    ASSERT_EQ(given.code, 0) << given.error;
+    EXPECT_FALSE(given.line.viewer.showPanel);
+    EXPECT_EQ(given.line.viewer.resolutionScale, 0.5f);
+    EXPECT_EQ(given.line.viewer.uiScale, 2.0f);
+    EXPECT_EQ(given.line.viewer.readback, "r.png");
+    EXPECT_EQ(given.line.viewer.stats, "s.json");
+    EXPECT_EQ(given.line.viewer.drop, "d.obj");
+    EXPECT_EQ(given.line.settings.samplesPerPixel, 8);
+    EXPECT_EQ(given.line.settings.width, 200);
+    EXPECT_EQ(given.line.settings.height, RenderSettings{}.height); // one of them given: no default
+
+    for (std::initializer_list<const char*> bad :
+         {std::initializer_list<const char*>{"--ui-scale", "9"},
+          {"--ui-scale", "nan"},
+          {"--resolution-scale", "0"},
+          {"--readback", "r.png"},
+          {"--stats", ""},
+          {"--drop"}}) {
+        const Parsed p = parse(bad, Program::Viewer);
+        EXPECT_EQ(p.code, 2) << *bad.begin();
+        EXPECT_NE(p.error.find(*bad.begin()), std::string::npos) << p.error;
+    }
+    // The viewer's options are the viewer's alone, and the bench's the bench's.
+    EXPECT_EQ(parse({"--no-panel", "-o", "x.png"}).code, 2);
+    EXPECT_EQ(parse({"--no-panel"}, Program::Bench).code, 2);
+    EXPECT_EQ(parse({"--workload", "bounce"}, Program::Viewer).code, 2);
+}
+
+TEST(CommandLine, TheBenchsOwnOptionsAndDefaults) {
+    const Parsed defaults = parse({}, Program::Bench);
+    ASSERT_EQ(defaults.code, 0) << defaults.error;
+    EXPECT_EQ(defaults.line.settings.width, kBenchWidth);
+    EXPECT_EQ(defaults.line.settings.height, kBenchHeight);
+    EXPECT_FALSE(defaults.line.bench.bounceWorkload);
+    const Parsed given =
+        parse({"--workload", "bounce", "--scalar", "--no-packets", "--no-blocks", "--no-passes",
+               "--no-embree", "--spatial-budget=0", "--presplit-budget", "0.25", "--embree-isa",
+               "avx2", "--height", "90"},
+              Program::Bench);
+    ASSERT_EQ(given.code, 0) << given.error;
+    const BenchOptions& b = given.line.bench;
+    EXPECT_TRUE(b.bounceWorkload && b.scalar && b.noPackets && b.noBlocks && b.noPasses &&
+                b.noEmbree);
+    EXPECT_EQ(b.spatialBudget, 0.0f);
+    EXPECT_EQ(b.presplitBudget, 0.25f);
+    EXPECT_EQ(b.embreeIsa, "avx2");
+    EXPECT_EQ(given.line.settings.height, 90);
+    EXPECT_EQ(given.line.settings.width, RenderSettings{}.width);
+}
+
 class SettingsFileTest : public ::testing::Test {
 protected:
     void SetUp() override {
