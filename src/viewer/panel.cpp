@@ -4,7 +4,6 @@
 #include "core/lab_presets.h"
 #include "core/render/false_colour.h"
 #include "panel_browser.h"
-#include "render_worker.h"
 #include "settings_edit.h"
 #include "split_view.h"
 
@@ -520,7 +519,7 @@ PanelActions drawPanel(PanelState& state, const PanelView& view) {
     indirectAndShadowSection(edit, view);
     cameraSection(edit, view, actions);
     displaySection(edit, state);
-    if (!sameJob(RenderJob{nullptr, edit}, RenderJob{nullptr, state.settings})) {
+    if (!(edit == state.settings)) {
         std::string why;
         if (acceptEdit(edit, state.settings, why)) {
             state.refused.clear();
