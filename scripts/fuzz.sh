@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-45}
-targets=(import_stream partial_file settings_json command_line linear_image)
+targets=(import_stream partial_file settings_json command_line linear_image screenshot_png)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j"$(nproc)" --target "${targets[@]/#/fuzz_}"

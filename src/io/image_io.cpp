@@ -8,13 +8,6 @@
 #include <filesystem>
 
 namespace raylab {
-namespace {
-
-std::string extensionOf(const std::string& path) {
-    return lowerCase(std::filesystem::path(path).extension().string());
-}
-
-} // namespace
 
 bool isSupportedImagePath(const std::string& path) {
     const std::string ext = extensionOf(path);

@@ -1,6 +1,7 @@
 #pragma once
 // Small string helpers shared by the io files (ASCII only; no locale).
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -29,6 +30,11 @@ inline std::string lowerCase(std::string text) {
         }
     }
     return text;
+}
+
+// A path's extension in lower case, with its dot (".png"); empty when it has none.
+inline std::string extensionOf(const std::string& path) {
+    return lowerCase(std::filesystem::path(path).extension().string());
 }
 
 // `text` made fit for one line of a message: line breaks, tabs and other control characters (a

@@ -2,6 +2,7 @@
 
 #include "core/cornell_box.h"
 #include "io/settings_json.h"
+#include "io/text_util.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -16,14 +17,6 @@ namespace {
 
 std::string sceneOf(const ShownImage& shown) {
     return shown.scene ? shown.scene->source : std::string(kLabBoxName);
-}
-
-bool hasExtension(const std::string& path, const char* extension) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) {
-        c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-    }
-    return ext == extension;
 }
 
 // `path` with "-right" before its extension and .json after (a.png -> a-right.json).
@@ -106,7 +99,7 @@ std::string settingsPathFor(const std::string& path) {
 
 bool saveScreenshot(const std::string& path, const ShownImage& shown, std::string& error,
                     const ScreenshotExtras& viewer) {
-    if (hasExtension(path, ".png")) {
+    if (extensionOf(path) == ".png") {
         if (!writePng(path, rgbaOf(shown), error, chunksFor(shown, path, viewer))) {
             return false;
         }
@@ -176,32 +169,6 @@ bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std
             std::remove(rightSettingsPathFor(path).c_str());
             return false;
         }
-    }
-    return true;
-}
-
-bool isScreenshotPath(const std::string& path) {
-    return hasExtension(path, ".png") || hasExtension(path, ".json");
-}
-
-bool readScreenshotSettings(const std::string& path, RenderSettings& settings,
-                            SettingsJsonExtras& extras, std::string& error) {
-    if (hasExtension(path, ".json")) {
-        return loadSettingsFile(path, settings, extras, error);
-    }
-    Rgba8Image image;
-    std::map<std::string, std::string> chunks;
-    if (!readPng(path, image, error, &chunks)) {
-        return false;
-    }
-    const auto chunk = chunks.find(kSettingsChunk);
-    if (chunk == chunks.end()) {
-        error = path + ": not a raylab screenshot (no " + kSettingsChunk + " chunk)";
-        return false;
-    }
-    if (!settingsFromJson(chunk->second, settings, extras, error)) {
-        error = path + ": " + error;
-        return false;
     }
     return true;
 }

@@ -15,6 +15,7 @@
 // observer's (raylab-render reproduces the picture from it), and its "observer" record keeps the
 // lab camera (ScreenshotExtras::observedLabCamera).
 
+#include "io/screenshot_settings.h"
 #include "io/settings_json.h"
 #include "shown_image.h"
 
@@ -30,9 +31,6 @@ struct ScreenshotExtras {
     CameraBookmarks bookmarks;
     std::optional<Camera> observedLabCamera;
 };
-
-inline constexpr const char* kSettingsChunk = "raylab-settings";
-inline constexpr const char* kSceneChunk = "raylab-scene";
 
 // `path` with its extension replaced by .json (a.png -> a.json).
 std::string settingsPathFor(const std::string& path);
@@ -51,15 +49,5 @@ bool saveScreenshot(const std::string& path, const ShownImage& shown, std::strin
 // (the name is claimed with link(2)). Sets `path` to the PNG written.
 bool saveNumberedScreenshot(const std::string& dir, const ShownImage& shown, std::string& path,
                             std::string& error, const ScreenshotExtras& viewer = {});
-
-// Reads the settings a raylab screenshot was taken with: a .json beside it, or its .png's
-// "raylab-settings" chunk, over `settings` (its scene and bookmarks into `extras`). False with a
-// one-line error naming the file for anything else (a PNG without the chunk is not a raylab
-// screenshot).
-bool readScreenshotSettings(const std::string& path, RenderSettings& settings,
-                            SettingsJsonExtras& extras, std::string& error);
-
-// Whether a path names a screenshot's settings (.png or .json) rather than a mesh.
-bool isScreenshotPath(const std::string& path);
 
 } // namespace raylab::viewer

@@ -4,6 +4,7 @@
 #include "io/command_line.h"
 #include "io/image_io.h"
 #include "io/partial_file.h"
+#include "io/screenshot_settings.h"
 #include "io/settings_json.h"
 
 #include <cmath>
@@ -147,6 +148,19 @@ std::string checkLinearImage(const uint8_t* data, std::size_t size) {
         image.height > kMaxImageSide ||
         image.pixels.size() != static_cast<std::size_t>(image.width) * image.height) {
         return "image: accepted with a size that does not agree with its pixels";
+    }
+    return {};
+}
+
+std::string checkScreenshotPng(const uint8_t* data, std::size_t size) {
+    RenderSettings settings;
+    SettingsJsonExtras extras;
+    std::string error;
+    if (!readScreenshotSettings(asFile(data, size, ".png"), settings, extras, error)) {
+        return oneLine("screenshot", error);
+    }
+    if (const std::string why = validate(settings); !why.empty()) {
+        return "screenshot: accepted values validate() refuses: " + why;
     }
     return {};
 }

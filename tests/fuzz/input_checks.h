@@ -20,5 +20,8 @@ std::string checkSettingsJson(const uint8_t* data, std::size_t size);
 std::string checkCommandLine(const uint8_t* data, std::size_t size);
 // A PFM or EXR picture (--reference; the first byte picks the format).
 std::string checkLinearImage(const uint8_t* data, std::size_t size);
+// A PNG dropped on the viewer as a screenshot to restore (readScreenshotSettings: the PNG and its
+// "raylab-settings" chunk); accepted settings must pass validate().
+std::string checkScreenshotPng(const uint8_t* data, std::size_t size);
 
 } // namespace raylab::fuzz

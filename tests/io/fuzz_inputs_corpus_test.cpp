@@ -1,6 +1,7 @@
-// Replays the seed corpora of the fuzz targets for partial files, settings JSON, command lines
-// and PFM/EXR pictures (tests/fuzz/corpus/<name>) under the normal build: every input must be
-// accepted whole or refused in one line, as the libFuzzer targets demand (input_checks.h).
+// Replays the seed corpora of the fuzz targets for partial files, settings JSON, command lines,
+// PFM/EXR pictures and dropped screenshots (tests/fuzz/corpus/<name>) under the normal build: every
+// input must be accepted whole or refused in one line, as the libFuzzer targets demand
+// (input_checks.h).
 
 #include "input_checks.h"
 
@@ -34,5 +35,8 @@ TEST(FuzzInputsCorpus, PartialFiles) { replay("partial_file", raylab::fuzz::chec
 TEST(FuzzInputsCorpus, SettingsJson) { replay("settings_json", raylab::fuzz::checkSettingsJson); }
 TEST(FuzzInputsCorpus, CommandLines) { replay("command_line", raylab::fuzz::checkCommandLine); }
 TEST(FuzzInputsCorpus, LinearImages) { replay("linear_image", raylab::fuzz::checkLinearImage); }
+TEST(FuzzInputsCorpus, ScreenshotPngs) {
+    replay("screenshot_png", raylab::fuzz::checkScreenshotPng);
+}
 
 } // namespace
