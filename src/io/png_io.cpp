@@ -14,6 +14,48 @@
 namespace raylab {
 namespace {
 
+constexpr png_uint_32 kMaxPngChunks = 256;
+
+// Walks the chunks of the PNG in `file` (whose first 8 bytes, the signature, were read): every
+// chunk's length must fit in what the file holds. libpng takes (and clears) the room a text
+// chunk's length field claims before it reads the chunk, so a 1 KB file claiming a 1.8 GB tEXt
+// chunk would take 1.8 GB. Returns an empty string, or why the file is refused. Leaves the file
+// just after the signature.
+std::string checkPngChunks(std::FILE* file) {
+    if (std::fseek(file, 0, SEEK_END) != 0) {
+        return "cannot seek in it";
+    }
+    const long size = std::ftell(file);
+    long pos = 8;
+    std::string problem;
+    while (pos < size && problem.empty()) {
+        unsigned char header[8];
+        if (std::fseek(file, pos, SEEK_SET) != 0 || std::fread(header, 1, 8, file) != 8) {
+            problem = "it ends inside a chunk's header";
+            break;
+        }
+        const unsigned long length = static_cast<unsigned long>(header[0]) << 24 |
+                                     static_cast<unsigned long>(header[1]) << 16 |
+                                     static_cast<unsigned long>(header[2]) << 8 | header[3];
+        const long room = size - pos - 12; // the chunk's data, after its header, before its CRC
+        if (room < 0 || length > static_cast<unsigned long>(room)) {
+            std::string type;
+            for (int i = 4; i < 8; ++i) {
+                type += header[i] >= 32 && header[i] < 127 ? static_cast<char>(header[i]) : '?';
+            }
+            problem = "a " + type + " chunk of " + std::to_string(length) +
+                      " bytes where the file holds " + std::to_string(room < 0 ? 0 : room);
+            break;
+        }
+        if (std::memcmp(header + 4, "IEND", 4) == 0) {
+            break;
+        }
+        pos += 12 + static_cast<long>(length);
+    }
+    std::fseek(file, 8, SEEK_SET);
+    return problem;
+}
+
 [[noreturn]] void onPngError(png_structp png, png_const_charp message) {
     if (auto* error = static_cast<std::string*>(png_get_error_ptr(png)); error != nullptr) {
         *error = message != nullptr ? message : "libpng error";
@@ -115,6 +157,9 @@ bool readPngFrom(ReadJob& job) {
     png_init_io(png, job.file);
     png_set_sig_bytes(png, 8);
     png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
+    // At most kMaxPngChunks ancillary chunks are kept (readPng checked every chunk's length
+    // against the file before libpng runs: checkPngChunks).
+    png_set_chunk_cache_max(png, kMaxPngChunks);
     png_read_info(png, info);
 
     png_set_expand(png); // palette to RGB, grey below 8 bits to 8, tRNS to alpha
@@ -209,6 +254,11 @@ bool readPng(const std::string& path, Rgba8Image& image, std::string& error,
         png_sig_cmp(signature, 0, sizeof signature) != 0) {
         std::fclose(file);
         error = "cannot read '" + path + "': not a PNG file";
+        return false;
+    }
+    if (const std::string problem = checkPngChunks(file); !problem.empty()) {
+        std::fclose(file);
+        error = "cannot read '" + path + "': " + problem;
         return false;
     }
     ReadJob job{file, {}, {}, {}, {}};

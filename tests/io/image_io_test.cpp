@@ -116,6 +116,27 @@ TEST_F(ImageIoTest, ReadPngRejectsGarbageAndTruncation) {
     EXPECT_NE(error.find("No such file"), std::string::npos) << error;
 }
 
+TEST_F(ImageIoTest, ReadPngRefusesAChunkLongerThanTheFileBeforeLibpngTakesItsRoom) {
+    // A screenshot whose text chunk's length says 1.8 GB in a file of a kilobyte: libpng would
+    // take (and clear) 1.8 GB before reading it.
+    Rgba8Image image;
+    image.width = 6;
+    image.height = 4;
+    image.pixels.assign(6 * 4 * 4, 200);
+    std::string error;
+    ASSERT_TRUE(writePng(path("shot.png"), image, error, {{"raylab-settings", "{}"}})) << error;
+    std::string bytes = readBytes(path("shot.png"));
+    const std::size_t text = bytes.find("tEXt");
+    ASSERT_NE(text, std::string::npos);
+    bytes[text - 4] = static_cast<char>(0x6c); // length 0x6c0000xx: about 1.8 GB
+    std::ofstream(path("claims.png"), std::ios::binary) << bytes;
+    Rgba8Image back;
+    EXPECT_FALSE(readPng(path("claims.png"), back, error));
+    EXPECT_NE(error.find("a tEXt chunk of"), std::string::npos) << error;
+    EXPECT_NE(error.find(path("claims.png")), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos);
+}
+
 TEST_F(ImageIoTest, PfmRoundTripIsBitExact) {
     const Framebuffer fb = testImage(5, 4);
     std::string error;
