@@ -1,8 +1,9 @@
 #include "io/mesh_formats.h"
 
+#include "io/text_util.h"
+
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <string>
 
 namespace raylab {
@@ -27,9 +28,7 @@ constexpr std::array<std::string_view, 69> kMeshExtensions = {
 std::span<const std::string_view> meshFileExtensions() { return kMeshExtensions; }
 
 bool isMeshFileName(std::string_view fileName) {
-    std::string lower(fileName);
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string lower = lowerCase(std::string(fileName));
     return std::any_of(kMeshExtensions.begin(), kMeshExtensions.end(), [&](std::string_view e) {
         return lower.size() > e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
     });

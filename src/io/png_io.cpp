@@ -34,9 +34,7 @@ std::string checkPngChunks(std::FILE* file) {
             problem = "it ends inside a chunk's header";
             break;
         }
-        const unsigned long length = static_cast<unsigned long>(header[0]) << 24 |
-                                     static_cast<unsigned long>(header[1]) << 16 |
-                                     static_cast<unsigned long>(header[2]) << 8 | header[3];
+        const unsigned long length = png_get_uint_32(header);
         const long room = size - pos - 12; // the chunk's data, after its header, before its CRC
         if (room < 0 || length > static_cast<unsigned long>(room)) {
             std::string type;
