@@ -549,6 +549,14 @@ const std::vector<Option>& options() {
          "once the window shows, act as if FILE were dropped on it (a mesh opens; a raylab "
          "screenshot's .png or .json restores it)",
          viewerFile(&ViewerFlags::drop)},
+        {"--record", "FILE.json", kViewer,
+         "on quitting, write every change of settings, view, inspection and screenshot, with its "
+         "frame, to FILE.json",
+         viewerFile(&ViewerFlags::record)},
+        {"--replay", "FILE.json", kViewer,
+         "play a recorded session back in the window, writing each of its screenshots again (to "
+         "--screenshot-dir), then quit",
+         viewerFile(&ViewerFlags::replay)},
         {"--json", nullptr, kBench, "print the results as JSON",
          [](const std::string&, ParseState& s) -> std::string {
              s.out.json = true;
@@ -775,6 +783,14 @@ int parseCommandLine(int argc, const char* const* argv, Program program, Command
     if (program == Program::Render && result.output.empty() && !result.inspect &&
         result.partial.empty() && result.saveFrames.empty()) {
         error = "missing output file (-o FILE or --partial FILE.exr; see --help)";
+        return 2;
+    }
+    if (!result.viewer.record.empty() && !result.viewer.replay.empty()) {
+        error = "--record and --replay: give one (a replay plays a recording as it was)";
+        return 2;
+    }
+    if (!result.viewer.replay.empty() && result.frames > 0) {
+        error = "--replay plays the recording's own frames; --frames does not apply";
         return 2;
     }
     if (!result.viewer.readback.empty() && result.frames <= 0) {

@@ -54,6 +54,8 @@ struct ViewerFlags {
     float resolutionScale = 1.0f; // --resolution-scale S in [0.1, 1]: render size = picture * S
     std::string stats;            // --stats FILE: frame rates and pass times at exit (run_stats.h)
     std::string drop;             // --drop FILE: acts as FILE dropped on the window
+    std::string record;           // --record FILE.json: the session's changes (session_recording.h)
+    std::string replay;           // --replay FILE.json: plays a recorded session back
     // --ui-scale S in [kMinUiScale, kMaxUiScale]: the panel's scale (font and sizes) instead of
     // the monitor's content scale; 0: the monitor's.
     float uiScale = 0.0f;

@@ -274,10 +274,11 @@ TEST(CommandLine, TheViewersOwnOptionsAndDefaults) {
     EXPECT_EQ(defaults.line.viewer.resolutionScale, 1.0f);
     EXPECT_EQ(defaults.line.viewer.uiScale, 0.0f); // the monitor's
 
-    const Parsed given = parse({"--no-panel", "--resolution-scale", "0.5", "--ui-scale=2",
-                                "--readback", "r.png", "--frames", "3", "--stats", "s.json",
-                                "--drop", "d.obj", "--spp", "8", "--width", "200"},
-                               Program::Viewer);
+    const Parsed given =
+        parse({"--no-panel", "--resolution-scale", "0.5", "--ui-scale=2", "--readback", "r.png",
+               "--frames", "3", "--stats", "s.json", "--drop", "d.obj", "--spp", "8", "--width",
+               "200", "--record", "session.json"},
+              Program::Viewer);
     ASSERT_EQ(given.code, 0) << given.error;
     EXPECT_FALSE(given.line.viewer.showPanel);
     EXPECT_EQ(given.line.viewer.resolutionScale, 0.5f);
@@ -285,6 +286,10 @@ TEST(CommandLine, TheViewersOwnOptionsAndDefaults) {
     EXPECT_EQ(given.line.viewer.readback, "r.png");
     EXPECT_EQ(given.line.viewer.stats, "s.json");
     EXPECT_EQ(given.line.viewer.drop, "d.obj");
+    EXPECT_EQ(given.line.viewer.record, "session.json");
+    const Parsed replay = parse({"--replay", "session.json"}, Program::Viewer);
+    ASSERT_EQ(replay.code, 0) << replay.error;
+    EXPECT_EQ(replay.line.viewer.replay, "session.json");
     EXPECT_EQ(given.line.settings.samplesPerPixel, 8);
     EXPECT_EQ(given.line.settings.width, 200);
     EXPECT_EQ(given.line.settings.height, RenderSettings{}.height); // one of them given: no default
@@ -295,7 +300,10 @@ TEST(CommandLine, TheViewersOwnOptionsAndDefaults) {
           {"--resolution-scale", "0"},
           {"--readback", "r.png"},
           {"--stats", ""},
-          {"--drop"}}) {
+          {"--drop"},
+          {"--record", ""},
+          {"--replay", "a.json", "--record", "b.json"},
+          {"--replay", "a.json", "--frames", "3"}}) {
         const Parsed p = parse(bad, Program::Viewer);
         EXPECT_EQ(p.code, 2) << *bad.begin();
         EXPECT_NE(p.error.find(*bad.begin()), std::string::npos) << p.error;
