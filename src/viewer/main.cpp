@@ -4,12 +4,15 @@
 #include "io/atomic_file.h"
 #include "io/command_line.h"
 #include "io/load_progress.h"
+#include "io/session_recording.h"
 #include "loaded_scene.h"
 #include "viewer_app.h"
 
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
 
 int main(int argc, char** argv) {
     using namespace raylab;
@@ -29,10 +32,25 @@ int main(int argc, char** argv) {
         std::fputs(usage(Program::Viewer).c_str(), stdout);
         return 0;
     }
-    if (std::string why;
-        !command.viewer.stats.empty() && !checkWritable(command.viewer.stats, why)) {
-        std::fprintf(stderr, "raylab: %s\n", why.c_str());
-        return 1;
+    for (const std::string& file : {command.viewer.stats, command.viewer.record}) {
+        if (std::string why; !file.empty() && !checkWritable(file, why)) {
+            std::fprintf(stderr, "raylab: %s\n", why.c_str());
+            return 1;
+        }
+    }
+    // A replay starts as its recording did: its first state's scene and settings.
+    std::optional<SessionRecording> replay;
+    if (!command.viewer.replay.empty()) {
+        replay.emplace();
+        if (!loadRecording(command.viewer.replay, *replay, error)) {
+            std::fprintf(stderr, "raylab: %s\n", error.c_str());
+            return 1;
+        }
+        const RecordedState& first = *replay->events.front().state;
+        command.scene = first.scene;
+        command.settings = first.settings; // complete: not placed for the scene again
+        command.bookmarks = first.bookmarks;
+        command.observedLabCamera = first.labCamera;
     }
     SceneLoadResult loaded;
     {
@@ -47,9 +65,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "raylab: %s\n", loaded.warnings.c_str());
     }
     // A mesh is framed except for what the command line gave, as raylab-render does.
-    if (const std::string why = finishSettings(loaded.scene->scene, command); !why.empty()) {
+    if (const std::string why =
+            replay ? std::string() : finishSettings(loaded.scene->scene, command);
+        !why.empty()) {
         std::fprintf(stderr, "raylab: %s\n", why.c_str());
         return 2;
     }
-    return runViewer(command, loaded.scene);
+    return runViewer(command, loaded.scene, std::move(replay));
 }

@@ -16,9 +16,11 @@
 // Without --frames, --screenshot saves the last shown finished picture on quitting.
 
 #include "io/command_line.h"
+#include "io/session_recording.h"
 #include "loaded_scene.h"
 
 #include <memory>
+#include <optional>
 
 namespace raylab::viewer {
 
@@ -35,10 +37,13 @@ inline constexpr double kIdleWakeSeconds = 0.5;
 // How often the panel's line of a running load ("loading FILE  3.2 s") is redrawn, in seconds.
 inline constexpr double kLoadClockSeconds = 0.1;
 
-// Opens the window and runs until it closes, Escape, or the script ends. The command line's
-// settings must be valid and already placed for the scene; settings.samplesPerPixel is the
-// sample cap. Returns the process exit code (0, or 1 when the
-// window cannot open or a requested file cannot be written).
-int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> scene);
+// Opens the window and runs until it closes, Escape, or the script ends (viewer_loop.h). The
+// command line's settings must be valid and already placed for the scene; settings.samplesPerPixel
+// is the sample cap. With `replay` (--replay: its first state in `command`) the window plays the
+// recording back, writing its screenshots again, and ends with it; --record writes the session's
+// recording on quitting. Returns the process exit code (0, or 1 when the window cannot open, a
+// requested file cannot be written, or a replay's scene or screenshot fails).
+int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> scene,
+              std::optional<SessionRecording> replay = std::nullopt);
 
 } // namespace raylab::viewer
