@@ -23,10 +23,8 @@
 #include "observer_view.h"
 #include "orbit_controls.h"
 #include "panel.h"
-#include "panel_cache.h"
 #include "panel_context.h"
-#include "panel_numbers.h"
-#include "panel_settings_refresh.h"
+#include "panel_layer.h"
 #include "picture_readouts.h"
 #include "ray_overlay_geometry.h"
 #include "redraw_schedule.h"
@@ -318,9 +316,9 @@ int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> sce
     PanelContext gui(window.handle());
     gui.setScale(uiScale);
     ImageQuad quad;
-    PanelCache panelCache;
+    PanelLayer panelLayer; // the panel drawn, its cached pixels, the copies of numbers it shows
     OverlayLines overlayLines;
-    if (!gui.ok() || !quad.create(error) || !panelCache.create(error) ||
+    if (!gui.ok() || !quad.create(error) || !panelLayer.create(error) ||
         !overlayLines.create(error)) {
         std::fprintf(stderr, "raylab: %s\n", gui.ok() ? error.c_str() : "cannot start Dear ImGui");
         return 1;
@@ -357,9 +355,7 @@ int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> sce
     ShownImage shown;
     RenderJob submitted;
     uint64_t submittedSerial = 0;
-    PanelNumbers numbers;               // live: every frame and picture
-    PanelNumbersRefresh panelNumbers;   // what the panel shows: a copy, refreshed every 0.25 s
-    PanelSettingsRefresh panelSettings; // the settings it shows: navigation 10 times a second
+    PanelNumbers numbers; // live: every frame and picture
     int framesShown = 0;
     int screenshots = 0;
     bool quit = false;
@@ -598,7 +594,6 @@ int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> sce
             }
         }
         if (layout.panelShown()) { // F1 hides it; a window too narrow for it has none
-            panelNumbers.update(numbers, wokeAt);
             PanelView view;
             const float perUnit = window.framebufferScale(); // framebuffer pixels per unit
             view.width = static_cast<float>(layout.panel.width) / perUnit;
@@ -609,28 +604,18 @@ int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> sce
             view.loading = loader.progress();
             view.step = step;
             view.maxEpsilon = maxEpsilon;
-            view.numbers = &panelNumbers.shown();
             view.hasEmitters = !scene->emitters.empty();
             view.observer = observer.on();
             view.inspection = inspection ? &*inspection : nullptr;
             view.hover = readouts.hover() ? &*readouts.hover() : nullptr;
             view.rectangle = readouts.rectangleMean() ? &*readouts.rectangleMean() : nullptr;
-            // The panel draws a copy of the settings (panel_settings_refresh.h); edits, made
-            // only while it is in use, when the copy is the live settings, count.
             const ImGuiIO& io = ImGui::GetIO();
-            PanelState drawn = panel;
-            drawn.settings = panelSettings.shown(
-                panel.settings, io.WantCaptureMouse || io.WantCaptureKeyboard, wokeAt);
-            const RenderSettings offered = drawn.settings;
-            const PanelActions actions = drawPanel(drawn, view);
+            const PanelActions actions =
+                panelLayer.draw(panel, std::move(view), numbers,
+                                io.WantCaptureMouse || io.WantCaptureKeyboard, wokeAt);
             if (actions.resizedTo > 0.0f) { // its edge dragged: the picture gets the rest
                 panelUnits = actions.resizedTo / uiScale;
                 layout = layoutOf(fbWidth, fbHeight);
-            }
-            const RenderSettings live = panel.settings;
-            panel = std::move(drawn); // its text fields and messages
-            if (panel.settings == offered) {
-                panel.settings = live; // no edit
             }
             screenshots += actions.screenshot ? 1 : 0;
             if (actions.frameScene) {
@@ -737,7 +722,7 @@ int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> sce
                          0.5f * static_cast<float>(layout.picture.height)) /
                             perUnit);
         }
-        panelCache.draw(gui.endFrame(), fbWidth, fbHeight);
+        panelLayer.composite(gui.endFrame(), fbWidth, fbHeight);
         keys.frameEnded();
         if (finalFrame && !flags.readback.empty()) {
             if (!writePng(flags.readback, readFramebuffer(fbWidth, fbHeight), error)) {
@@ -769,13 +754,10 @@ int runViewer(const CommandLine& command, std::shared_ptr<const LoadedScene> sce
         if (ImGui::IsAnyMouseDown() || held.anyHeld()) {
             schedule.want(now);
         }
-        // The panel shows the last picture's numbers once their refresh comes, even when
-        // nothing else is drawn then.
-        if (const auto catchUp = panelNumbers.catchUpAt(numbers); showPanel && catchUp) {
-            schedule.wantAt(*catchUp);
-        }
-        if (const auto catchUp = panelSettings.catchUpAt(panel.settings); showPanel && catchUp) {
-            schedule.wantAt(*catchUp);
+        // The panel ends on the live settings and the last picture's numbers, even when nothing
+        // else is drawn then.
+        if (const auto wake = panelLayer.nextWake(panel.settings, numbers); showPanel && wake) {
+            schedule.wantAt(*wake);
         }
         // The panel counts a running load's seconds.
         if (showPanel && loader.busy()) {
