@@ -31,6 +31,8 @@ public:
         }
         return count_ == 0 ? 0.0f : sum / static_cast<float>(count_);
     }
+    // Same capacity, values and ring position.
+    bool operator==(const History&) const = default;
 
 private:
     std::vector<float> values_;

@@ -71,7 +71,7 @@ struct PanelView {
     // The pixel under the cursor and the Shift + drag rectangle's mean (picture_readouts.h).
     const PixelReadout* hover = nullptr;
     const RectangleMean* rectangle = nullptr;
-    // The statistics shown: a copy refreshed a few times a second (PanelNumbersRefresh), so that
+    // The statistics shown: a copy refreshed a few times a second (panel_layer.h), so that
     // an untouched panel draws the same pixels from frame to frame. Null: none shown.
     const PanelNumbers* numbers = nullptr;
 };

@@ -9,7 +9,7 @@
 // to the panel's bounds (source "one", destination "one minus source alpha"). Outside the bounds
 // no pixel is touched; inside, the result is ImGui's drawn directly, up to 8-bit rounding.
 // Needs a current OpenGL 3.3 core context (glad loaded) and ImGui's OpenGL3 backend initialised
-// for its whole life.
+// for its whole life. Used through PanelLayer (panel_layer.h).
 
 #include "panel_signature.h"
 

@@ -24,7 +24,7 @@ public:
     void setScale(float scale) { wantedScale_ = scale; }
     float scale() const { return wantedScale_; }
     void beginFrame();
-    // Builds the draw data of the frame; draw it with PanelCache::draw (or ImGui's renderer).
+    // Builds the draw data of the frame; draw it with PanelLayer::composite (or ImGui's renderer).
     // Valid until the next beginFrame.
     ImDrawData& endFrame();
 

@@ -65,7 +65,7 @@ void ViewerLoop::drawFrame() {
                      0.5f * static_cast<float>(layout_.picture.height)) /
                         perUnit);
     }
-    panelCache_.draw(gui_->endFrame(), fbWidth_, fbHeight_);
+    panelLayer_.composite(gui_->endFrame(), fbWidth_, fbHeight_);
     keys_->frameEnded();
     if (finalFrame_ && !flags_.readback.empty()) {
         std::string error;

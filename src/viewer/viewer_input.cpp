@@ -342,7 +342,6 @@ void ViewerLoop::inspect() {
 }
 
 void ViewerLoop::drawPanelColumn() {
-    panelNumbers_.update(numbers_, wokeAt_);
     PanelView view;
     const float perUnit = window_.framebufferScale(); // framebuffer pixels per unit
     view.width = static_cast<float>(layout_.panel.width) / perUnit;
@@ -353,31 +352,22 @@ void ViewerLoop::drawPanelColumn() {
     view.loading = loader_.progress();
     view.step = step_;
     view.maxEpsilon = maxEpsilon_;
-    view.numbers = &panelNumbers_.shown();
     view.hasEmitters = !scene_->emitters.empty();
     view.observer = observer_.on();
     view.inspection = inspection_ ? &*inspection_ : nullptr;
     view.hover = readouts_.hover() ? &*readouts_.hover() : nullptr;
     view.rectangle = readouts_.rectangleMean() ? &*readouts_.rectangleMean() : nullptr;
-    // The panel draws a copy of the settings (panel_settings_refresh.h); edits, made only while
-    // it is in use, when the copy is the live settings, count.
     const ImGuiIO& io = ImGui::GetIO();
-    PanelState drawn = panel_;
-    drawn.settings = panelSettings_.shown(panel_.settings,
-                                          io.WantCaptureMouse || io.WantCaptureKeyboard, wokeAt_);
-    const RenderSettings offered = drawn.settings;
-    const PanelActions actions = drawPanel(drawn, view);
+    const RenderSettings live = panel_.settings;
+    const PanelActions actions = panelLayer_.draw(
+        panel_, std::move(view), numbers_, io.WantCaptureMouse || io.WantCaptureKeyboard, wokeAt_);
     if (actions.resizedTo > 0.0f) { // its edge dragged: the picture gets the rest
         panelUnits_ = actions.resizedTo / uiScale_;
         layout_ = layoutOf(fbWidth_, fbHeight_);
     }
     if (replay_) {
-        return; // the replay decides every setting: the panel only shows them
-    }
-    const RenderSettings live = panel_.settings;
-    panel_ = std::move(drawn); // its text fields and messages
-    if (panel_.settings == offered) {
-        panel_.settings = live; // no edit
+        panel_.settings = live; // the replay decides every setting: the panel only shows them
+        return;
     }
     screenshots_ += actions.screenshot ? 1 : 0;
     if (actions.frameScene) {

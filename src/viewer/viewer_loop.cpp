@@ -84,7 +84,7 @@ bool ViewerLoop::open(std::string& error) {
         error = "cannot start Dear ImGui";
         return false;
     }
-    if (!quad_.create(error) || !panelCache_.create(error) || !overlayLines_.create(error)) {
+    if (!quad_.create(error) || !panelLayer_.create(error) || !overlayLines_.create(error)) {
         return false;
     }
     keys_.emplace(window_.handle()); // in front of ImGui's key callbacks
@@ -234,16 +234,14 @@ void ViewerLoop::scheduleNextWake() {
     if (ImGui::IsAnyMouseDown() || held_.anyHeld()) {
         schedule_.want(now);
     }
-    // The panel shows the last picture's numbers once their refresh comes, even when nothing
-    // else is drawn then.
-    if (const auto catchUp = panelNumbers_.catchUpAt(numbers_); showPanel_ && catchUp) {
-        schedule_.wantAt(*catchUp);
-    }
-    if (const auto catchUp = panelSettings_.catchUpAt(panel_.settings); showPanel_ && catchUp) {
-        schedule_.wantAt(*catchUp);
+    // The panel ends on the live settings and the last picture's numbers, even when nothing
+    // else is drawn then. (A window too narrow for the panel has none: nothing to catch up.)
+    if (const auto wake = panelLayer_.nextWake(panel_.settings, numbers_);
+        layout_.panelShown() && wake) {
+        schedule_.wantAt(*wake);
     }
     // The panel counts a running load's seconds.
-    if (showPanel_ && loader_.busy()) {
+    if (layout_.panelShown() && loader_.busy()) {
         schedule_.wantAt(after(now, kLoadClockSeconds));
     }
     if (ImGui::GetIO().WantTextInput) {

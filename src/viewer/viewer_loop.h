@@ -21,10 +21,9 @@
 #include "observer_view.h"
 #include "orbit_controls.h"
 #include "panel.h"
-#include "panel_cache.h"
 #include "panel_context.h"
+#include "panel_layer.h"
 #include "panel_numbers.h"
-#include "panel_settings_refresh.h"
 #include "picture_readouts.h"
 #include "redraw_schedule.h"
 #include "render_worker.h"
@@ -112,7 +111,7 @@ private:
     InputCollector input_;
     std::optional<PanelContext> gui_;
     ImageQuad quad_;
-    PanelCache panelCache_;
+    PanelLayer panelLayer_; // the panel drawn, its cached pixels, the copies of numbers it shows
     OverlayLines overlayLines_;
     std::optional<KeyRelay> keys_;
 
@@ -120,11 +119,9 @@ private:
     PanelState panel_;
     bool showPanel_;
     float uiScale_ = 1.0f;
-    float panelUnits_ = kPanelColumnWidth; // the column's width at UI scale 1 (its edge drags)
-    bool showKeys_ = false;                // the list of keys and mouse gestures (H)
-    PanelNumbers numbers_;                 // live: every frame and picture
-    PanelNumbersRefresh panelNumbers_;     // what the panel shows: refreshed every 0.25 s
-    PanelSettingsRefresh panelSettings_;   // the settings it shows: navigation 10 times a second
+    float panelUnits_ = kPanelColumnWidth;      // the column's width at UI scale 1 (its edge drags)
+    bool showKeys_ = false;                     // the list of keys and mouse gestures (H)
+    PanelNumbers numbers_;                      // live: every frame and picture
     std::optional<PixelInspection> inspection_; // the inspected pixel's numbers, this frame
 
     // Navigation and the camera's views.

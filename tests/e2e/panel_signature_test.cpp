@@ -2,38 +2,16 @@
 // same panel gives the same signature; a hover, an edited value, a new number or another display
 // size change it; the bounds hold the panel and nothing far from it.
 
+#include "headless_imgui.h"
 #include "panel.h"
 #include "panel_signature.h"
 
 #include <cfloat>
-#include <cstdint>
 #include <gtest/gtest.h>
 #include <imgui.h>
 
 namespace raylab::viewer {
 namespace {
-
-// A Dear ImGui context with its font atlas built, as a renderer backend would (no GL needed to
-// build draw data).
-class HeadlessImGui {
-public:
-    HeadlessImGui() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.LogFilename = nullptr;
-        io.DisplaySize = ImVec2(1280.0f, 720.0f);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-        io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(1)));
-        ImGui::StyleColorsDark();
-    }
-    HeadlessImGui(const HeadlessImGui&) = delete;
-    HeadlessImGui& operator=(const HeadlessImGui&) = delete;
-    ~HeadlessImGui() { ImGui::DestroyContext(); }
-};
 
 // Draws one frame of the panel and returns its signature.
 PanelSignature panelFrame(PanelState& state, const PanelView& view) {
