@@ -26,6 +26,7 @@ from pngread import read_png  # noqa: E402
 from e2e_minimise import test_minimise  # noqa: E402
 from e2e_observer import test_observer  # noqa: E402
 from e2e_panel import test_panel, test_panel_edge, test_panel_scale  # noqa: E402
+from e2e_record import test_record  # noqa: E402
 from e2e_path import (test_bookmarks, test_drop, test_inspect, test_mean_n,  # noqa: E402
                       test_orbit, test_snapshot, test_split, test_undo)
 from e2e_scene_path import test_browse, test_scene_path  # noqa: E402
@@ -336,6 +337,7 @@ TESTS = {
     "import_failures": (test_import_failures, True),
     "import_cancel": (test_import_cancel, True),
     "import_quit": (test_import_quit, True),
+    "record": (test_record, True),
 }
 
 
