@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace raylab::viewer {
 namespace {
@@ -43,7 +44,8 @@ TEST(SessionRecorder, NotesChangesOnlyAndScreenshotsAfterAState) {
     EXPECT_EQ(r.events[3].frame, 9);
     EXPECT_EQ(r.events[3].state->settings.camera.position.x, 0.0f);
 
-    const fs::path dir = fs::temp_directory_path() / "raylab_session_recorder_test";
+    const fs::path dir =
+        fs::temp_directory_path() / ("raylab_session_recorder_test-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string path = (dir / "s.json").string();
     std::string error;

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <initializer_list>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace raylab {
@@ -339,7 +340,11 @@ TEST(CommandLine, TheBenchsOwnOptionsAndDefaults) {
 class SettingsFileTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / "raylab-command-line-test";
+        // A folder of its own: ctest runs this fixture's tests side by side.
+        dir_ = fs::temp_directory_path() /
+               ("raylab-command-line-test-" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
+                std::to_string(::getpid()));
         fs::create_directories(dir_);
         file_ = (dir_ / "s.json").string();
     }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace raylab {
 namespace {
@@ -63,7 +64,8 @@ TEST(SessionRecording, EveryPartRoundTripsExactly) {
 }
 
 TEST(SessionRecording, SavesAtomicallyAndLoads) {
-    const fs::path dir = fs::temp_directory_path() / "raylab_session_recording_test";
+    const fs::path dir =
+        fs::temp_directory_path() / ("raylab_session_recording_test-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string path = (dir / "session.json").string();
     std::string error;
