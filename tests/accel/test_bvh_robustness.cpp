@@ -91,6 +91,7 @@ TEST(BvhRobustness, BuildIsTheSameForAnyThreadCount) {
     one.threads = 1;
     two.threads = 2;
     eight.threads = 8;
+    one.keepBinaryNodes = two.keepBinaryNodes = eight.keepBinaryNodes = true; // both forms
     const Bvh a = buildBvh(scene, one), b = buildBvh(scene, two), c = buildBvh(scene, eight);
     for (const Bvh* other : {&b, &c}) {
         ASSERT_EQ(a.nodes.size(), other->nodes.size());
@@ -117,7 +118,9 @@ TEST(BvhRobustness, LeafSizeAndBinCountOptions) {
             BvhBuildOptions options;
             options.maxLeafSize = leaf;
             options.binCount = bins;
+            options.keepBinaryNodes = true;
             const Bvh bvh = buildBvh(scene, options);
+            ASSERT_FALSE(bvh.nodes.empty());
             for (const BvhNode& node : bvh.nodes) {
                 ASSERT_LE(node.count, static_cast<uint32_t>(leaf));
             }

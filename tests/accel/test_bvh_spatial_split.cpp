@@ -86,7 +86,9 @@ TEST(BvhSpatialSplit, SameTreeForAnyThreadCount) {
     BvhBuildOptions one = spatialOnly(0.3f), two = spatialOnly(0.3f);
     one.threads = 1;
     two.threads = 2;
+    one.keepBinaryNodes = two.keepBinaryNodes = true; // both forms
     const Bvh a = buildBvh(scene, one), b = buildBvh(scene, two);
+    ASSERT_FALSE(a.nodes.empty());
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)), 0);
     ASSERT_EQ(a.triangleBlocks.size(), b.triangleBlocks.size());

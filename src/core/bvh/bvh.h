@@ -46,7 +46,9 @@ struct alignas(16) BvhShadingRecord {
 static_assert(sizeof(BvhShadingRecord) == 16);
 
 struct Bvh {
-    std::vector<BvhNode> nodes; // nodes[0] is the root; empty for a scene with no valid triangle
+    // nodes[0] is the root; empty for a scene with no valid triangle, and, once the 8-wide form
+    // is built from them, unless BvhBuildOptions::keepBinaryNodes asks to keep them.
+    std::vector<BvhNode> nodes;
     // The leaf triangles, in leaf order, when there is no SIMD form. With the SIMD form, the
     // triangles are kept once, in triangleBlocks: this is empty, and leaf triangle i of a binary
     // leaf is lane i % 8 of triangleBlocks[i / 8] (leafTriangle() reads either).
@@ -66,8 +68,11 @@ struct Bvh {
 
     // Leaf triangle i of a binary leaf (BvhNode::index <= i < index + count).
     BvhTriangle leafTriangle(uint32_t i) const;
+    // The box of every valid triangle (empty when there is none).
+    Aabb bounds() const;
 
     std::size_t memoryBytes() const;
+    // Levels of the binary nodes, or of the 8-wide nodes when only those are kept (0 when empty).
     int depth() const;
 };
 
@@ -76,6 +81,10 @@ struct BvhBuildOptions {
     int binCount = 16;   // SAH bins per axis
     int threads = 0;     // 0 = every hardware thread; the result does not depend on it
     bool simd = true;    // also build the 8-wide form when the CPU has AVX2
+    // Keep the binary nodes beside the 8-wide form (tests of the binary tree itself). Without
+    // them the 8-wide form is the whole BVH: the binary nodes cost 37 bytes a triangle (dragon).
+    // A BVH without the 8-wide form always keeps them.
+    bool keepBinaryNodes = false;
     // Extra references for pre-split triangles (bvh_presplit.h), as a fraction of the valid
     // triangles; 0 = none. Triangles of similar shape and size get none whatever the budget.
     float presplitBudget = 0.5f;
@@ -110,8 +119,9 @@ struct TraversalCost {
 Hit closestHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
 bool anyHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
 
-// The scalar reference: the binary nodes and intersectTriangle, whatever the Bvh holds. The
-// SIMD path gives exactly its answers (t, u, v, triangle) on every ray.
+// The scalar reference: intersectTriangle and the scalar box test, walking the binary nodes when
+// the Bvh keeps them, else the 8-wide nodes one child and one lane at a time. The SIMD path
+// gives exactly its answers (t, u, v, triangle) on every ray.
 Hit closestHitScalar(const Bvh& bvh, const Ray& ray);
 bool anyHitScalar(const Bvh& bvh, const Ray& ray);
 

@@ -280,6 +280,9 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     if (wide) {
         bvh.shading = shadingRecords(scene, team);
     }
+    if (!bvh.wideNodes.empty() && !options.keepBinaryNodes) {
+        std::vector<BvhNode>().swap(bvh.nodes); // the 8-wide form holds the tree and triangles
+    }
     return bvh;
 }
 
@@ -307,9 +310,41 @@ BvhTriangle Bvh::leafTriangle(uint32_t i) const {
     return t;
 }
 
+Aabb Bvh::bounds() const {
+    Aabb box;
+    if (!nodes.empty()) {
+        box.lower = nodes[0].lower;
+        box.upper = nodes[0].upper;
+    } else if (!wideNodes.empty()) {
+        const BvhWideNode& root = wideNodes[0];
+        for (int c = 0; c < kWideLanes; ++c) {
+            if (root.child[c] != kWideEmpty) {
+                box.extend(glm::vec3(root.lower[0][c], root.lower[1][c], root.lower[2][c]));
+                box.extend(glm::vec3(root.upper[0][c], root.upper[1][c], root.upper[2][c]));
+            }
+        }
+    }
+    return box;
+}
+
 int Bvh::depth() const {
     if (nodes.empty()) {
-        return 0;
+        int deepest = 0;
+        std::vector<std::pair<uint32_t, int>> stack;
+        if (!wideNodes.empty()) {
+            stack.push_back({0u, 1});
+        }
+        while (!stack.empty()) {
+            const auto [index, level] = stack.back();
+            stack.pop_back();
+            deepest = std::max(deepest, level);
+            for (const uint32_t child : wideNodes[index].child) {
+                if (child != kWideEmpty && (child & kWideLeafFlag) == 0) {
+                    stack.push_back({child, level + 1});
+                }
+            }
+        }
+        return deepest;
     }
     int deepest = 0;
     std::vector<std::pair<uint32_t, int>> stack{{0u, 1}};

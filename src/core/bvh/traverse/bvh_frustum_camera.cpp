@@ -21,7 +21,7 @@ float maxAbs(const glm::vec3& v) {
 
 float frustumTolerance(const Bvh& bvh, const glm::vec3& apex) {
     constexpr float kToleranceScale = 4e-5f;
-    const BvhNode& root = bvh.nodes[0];
+    const Aabb root = bvh.bounds();
     return kToleranceScale * std::max({maxAbs(root.lower), maxAbs(root.upper), maxAbs(apex)});
 }
 

@@ -1,4 +1,5 @@
-// Scalar traversal of the binary BVH (the reference), and the dispatch to the SIMD traversal.
+// Scalar traversal (the reference) of the binary BVH, or of the 8-wide one when the binary nodes
+// are not kept, and the dispatch to the SIMD traversal.
 
 #include "bvh/bvh.h"
 #include "bvh/traverse/bvh_box_ray.h"
@@ -120,12 +121,131 @@ template <class Cost> bool anyHitBinary(const Bvh& bvh, const Ray& ray, Cost cos
     return found;
 }
 
+// At most 7 entries wait per level of the 8-wide tree, which is no deeper than the binary one.
+constexpr int kWideScalarStackSize = 7 * kScalarStackSize + 1;
+
+// Visits the triangle blocks of the leaves whose boxes the ray enters, one child box at a time
+// with the scalar slab test, nearest child first, skipping entries that start beyond limit().
+// visitBlock(block) returns true to stop the traversal.
+template <class Limit, class VisitBlock>
+void traverseWideScalar(const Bvh& bvh, const BoxRay& r, Limit limit, VisitBlock visitBlock) {
+    struct Entry {
+        uint32_t child;
+        float tNear;
+    };
+    Entry stack[kWideScalarStackSize];
+    int size = 0;
+    stack[size++] = {0, r.tMin}; // the root node has no box of its own
+    while (size > 0) {
+        const Entry e = stack[--size];
+        if (e.tNear > limit() * kBoxRoundUp) {
+            continue;
+        }
+        if ((e.child & kWideLeafFlag) != 0) {
+            const uint32_t first = e.child & kWideFirstBlockMask;
+            const uint32_t count = ((e.child >> kWideBlockShift) & (kWideMaxLeafBlocks - 1)) + 1;
+            for (uint32_t b = first; b < first + count; ++b) {
+                if (visitBlock(bvh.triangleBlocks[b])) {
+                    return;
+                }
+            }
+            continue;
+        }
+        const BvhWideNode& node = bvh.wideNodes[e.child];
+        Entry hits[kWideLanes];
+        int hitCount = 0;
+        for (int c = 0; c < kWideLanes; ++c) {
+            if (node.child[c] == kWideEmpty) {
+                continue;
+            }
+            const float bounds[2][3] = {{node.lower[0][c], node.lower[1][c], node.lower[2][c]},
+                                        {node.upper[0][c], node.upper[1][c], node.upper[2][c]}};
+            float tNear;
+            if (hitBox(r, bounds, limit(), tNear)) {
+                // Insertion by distance, farthest first, so the nearest is popped first.
+                int at = hitCount++;
+                while (at > 0 && hits[at - 1].tNear < tNear) {
+                    hits[at] = hits[at - 1];
+                    --at;
+                }
+                hits[at] = {node.child[c], tNear};
+            }
+        }
+        for (int i = 0; i < hitCount; ++i) {
+            stack[size++] = hits[i];
+        }
+    }
+}
+
+// Lane `lane` of a block as three vertices.
+void blockTriangle(const BvhTriangleBlock& block, int lane, glm::vec3 (&v)[3]) {
+    for (int k = 0; k < 3; ++k) {
+        v[k] =
+            glm::vec3(block.vertex[k][0][lane], block.vertex[k][1][lane], block.vertex[k][2][lane]);
+    }
+}
+
+Hit closestHitWideScalar(const Bvh& bvh, const Ray& ray) {
+    const WatertightRay wray(ray);
+    Hit best;
+    if (bvh.wideNodes.empty() || !wray.valid) {
+        return best;
+    }
+    float limit = ray.tMax;
+    traverseWideScalar(
+        bvh, BoxRay(ray), [&] { return limit; },
+        [&](const BvhTriangleBlock& block) {
+            for (int lane = 0; lane < kWideLanes; ++lane) {
+                glm::vec3 v[3];
+                blockTriangle(block, lane, v);
+                const uint32_t index = block.sceneIndex[lane];
+                float t, u, w;
+                if (intersectTriangle(wray, v[0], v[1], v[2], t, u, w) &&
+                    (t < best.t || (t == best.t && index < best.triangle))) {
+                    best = Hit{t, u, w, index};
+                    limit = t;
+                }
+            }
+            return false;
+        });
+    return best;
+}
+
+bool anyHitWideScalar(const Bvh& bvh, const Ray& ray) {
+    const WatertightRay wray(ray);
+    if (bvh.wideNodes.empty() || !wray.valid) {
+        return false;
+    }
+    bool found = false;
+    traverseWideScalar(
+        bvh, BoxRay(ray), [&] { return ray.tMax; },
+        [&](const BvhTriangleBlock& block) {
+            for (int lane = 0; lane < kWideLanes && !found; ++lane) {
+                glm::vec3 v[3];
+                blockTriangle(block, lane, v);
+                float t, u, w;
+                found = intersectTriangle(wray, v[0], v[1], v[2], t, u, w);
+            }
+            return found;
+        });
+    return found;
+}
+
 } // namespace
 
 Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
+    if (bvh.nodes.empty() && !bvh.wideNodes.empty()) {
+        return closestHitWideScalar(bvh, ray);
+    }
     return closestHitBinary(bvh, ray, NoCost{});
 }
-bool anyHitScalar(const Bvh& bvh, const Ray& ray) { return anyHitBinary(bvh, ray, NoCost{}); }
+
+bool anyHitScalar(const Bvh& bvh, const Ray& ray) {
+    if (bvh.nodes.empty() && !bvh.wideNodes.empty()) {
+        return anyHitWideScalar(bvh, ray);
+    }
+    return anyHitBinary(bvh, ray, NoCost{});
+}
 
 Hit closestHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
     if (bvh.wideNodes.empty()) {
