@@ -1,7 +1,10 @@
 // Binary to 8-wide BVH. Each wide node starts from a binary node's two children and keeps
 // opening the child with the largest surface area until it has 8 children or none can open.
 // A binary subtree with at most kLeafMerge triangles becomes one leaf: one 8-lane triangle
-// test costs about as much as a 4-lane one, and it saves the box tests below it.
+// test costs about as much as a 4-lane one, and it saves the box tests below it. A subtree whose
+// two children are such leaves becomes one leaf of two blocks: it saves the wide node that would
+// hold just those two (a third of the dragon's wide nodes did) and packs the blocks fuller, and
+// measured no slower (PERFORMANCE.md, "BVH memory").
 //
 // The top of the wide tree is made first, down to binary subtrees of at most a number of
 // triangles that depends only on the tree; those become wide subtrees, made in parallel into
@@ -50,24 +53,27 @@ struct BinaryTree {
     const std::vector<uint32_t>& leafScene; // leaf triangle -> scene triangle
     std::vector<Range> ranges;              // per binary node
     std::vector<uint32_t> slotOf;           // leaf triangle -> its lane in its part's blocks
+    std::vector<bool> leaf;                 // per binary node: it becomes one wide leaf
 
     BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves)
-        : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()), slotOf(leaves.size()) {
+        : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()), slotOf(leaves.size()),
+          leaf(b.nodes.size()) {
         // Children always follow their parent, so a backwards pass sees children first.
         for (std::size_t i = b.nodes.size(); i-- > 0;) {
             const BvhNode& n = b.nodes[i];
             if (n.isLeaf()) {
                 ranges[i] = {n.index, n.count};
-            } else {
-                ranges[i] = {ranges[n.index].first,
-                             ranges[n.index].count + ranges[n.index + 1].count};
+                leaf[i] = true;
+                continue;
             }
+            const uint32_t l = n.index, r = n.index + 1;
+            ranges[i] = {ranges[l].first, ranges[l].count + ranges[r].count};
+            leaf[i] = ranges[i].count <= kLeafMerge ||
+                      (ranges[l].count <= kLeafMerge && ranges[r].count <= kLeafMerge);
         }
     }
 
-    bool opens(uint32_t binary) const {
-        return !bvh.nodes[binary].isLeaf() && ranges[binary].count > kLeafMerge;
-    }
+    bool opens(uint32_t binary) const { return !leaf[binary]; }
 };
 
 class Collapser {
