@@ -7,7 +7,7 @@
 // Keys held together move together (each by its own steps).
 //
 // Times are steady_clock time points, given by the caller (no clock is read here); they must not
-// go back. No GLFW or ImGui calls: the window glue is input.h and viewer_app.cpp.
+// go back. No GLFW or ImGui calls: the window glue is input.h and viewer_input.cpp.
 
 #include "navigation.h"
 

@@ -7,7 +7,8 @@
 // frames after it that Dear ImGui needs, a held mouse button, a blinking text cursor, a resize,
 // a loaded scene. Frames are paced to at most kFramesPerSecond; an idle window draws nothing, so
 // the tracer gets the CPU that a software GL driver would spend redrawing identical frames.
-// While minimised it draws nothing. Scripted runs (--frames) draw every frame at the paced rate.
+// While minimised it draws nothing. Scripted runs (--frames) and replays (--replay) draw every
+// frame at the paced rate.
 //
 // Scripted end (--frames N): the viewer quits after N shown frames. With --screenshot FILE or
 // --readback FILE it keeps going after N until the picture on screen is final (the sample cap
