@@ -5,6 +5,7 @@
 #include "io/image_io.h"
 #include "io/partial_file.h"
 #include "io/screenshot_settings.h"
+#include "io/session_recording.h"
 #include "io/settings_json.h"
 
 #include <cmath>
@@ -63,8 +64,34 @@ std::string checkPartialFile(const uint8_t* data, std::size_t size) {
     return {};
 }
 
+std::string checkRecording(const std::string& text) {
+    SessionRecording recording;
+    std::string error;
+    if (!recordingFromJson(text, recording, error)) {
+        return oneLine("recording", error);
+    }
+    for (const RecordedEvent& event : recording.events) {
+        if (event.state) {
+            if (const std::string why = validate(event.state->settings); !why.empty()) {
+                return "recording: accepted settings validate() refuses: " + why;
+            }
+        }
+    }
+    SessionRecording back;
+    if (!recordingFromJson(recordingToJson(recording), back, error)) {
+        return "recording: what was written does not read back: " + error;
+    }
+    if (!(back == recording)) {
+        return "recording: a write and read back changed it";
+    }
+    return {};
+}
+
 std::string checkSettingsJson(const uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
+    if (const std::string why = checkRecording(text); !why.empty()) {
+        return why;
+    }
     RenderSettings settings;
     SettingsJsonExtras extras;
     std::string error;

@@ -12,9 +12,12 @@ namespace raylab::fuzz {
 
 // A partial render file (raylab-merge's input).
 std::string checkPartialFile(const uint8_t* data, std::size_t size);
-// Settings JSON text (--settings, and the raylab-settings chunk of a dropped screenshot); an
-// accepted one must also survive a write and read back unchanged.
+// Settings JSON text (--settings, and the raylab-settings chunk of a dropped screenshot), and
+// the same text as a session recording (--replay); an accepted one must also survive a write
+// and read back unchanged.
 std::string checkSettingsJson(const uint8_t* data, std::size_t size);
+// A session recording's JSON text (--replay), the part of checkSettingsJson that reads it.
+std::string checkRecording(const std::string& text);
 // A command line of raylab-render, raylab or raylab-bench (the first byte picks the program;
 // arguments are the rest split at zero bytes).
 std::string checkCommandLine(const uint8_t* data, std::size_t size);
