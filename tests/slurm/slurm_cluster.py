@@ -65,7 +65,7 @@ class Cluster:
              f"--seed-file={self.path('munged.seed')}"], capture_output=True, text=True)
         if started.returncode != 0:
             raise Unavailable(f"munged did not start: {started.stderr.strip()}")
-        self._remember_pid("munged.pid")
+        self.pids.append(self._wait_for_pid("munged.pid", "munged"))
         host = socket.gethostname().split(".")[0]
         conf = f"""ClusterName=raylabtest
 SlurmctldHost={host}(127.0.0.1)
@@ -101,8 +101,7 @@ PartitionName=raylab Nodes=ALL Default=YES MaxTime=INFINITE State=UP
             if result.returncode != 0:
                 raise Unavailable(f"{daemon} did not start: {result.stderr.strip()} "
                                   f"{self.log_tail(daemon)}")
-            self._wait_for_file(pid, daemon)
-            self._remember_pid(pid)
+            self.pids.append(self._wait_for_pid(pid, daemon))
         deadline = time.monotonic() + 60
         while time.monotonic() < deadline:
             state = self.run(["sinfo", "--noheader", "--format=%t"]).stdout.strip()
@@ -112,16 +111,21 @@ PartitionName=raylab Nodes=ALL Default=YES MaxTime=INFINITE State=UP
         raise Unavailable(f"the node did not come up (state {state!r}) "
                           f"{self.log_tail('slurmd')}")
 
-    def _wait_for_file(self, name, daemon):
+    def _wait_for_pid(self, name, daemon):
+        """The pid in the daemon's pid file, once the file exists and holds it (the daemon
+        creates the file before it writes the number)."""
         deadline = time.monotonic() + 20
-        while not os.path.exists(self.path(name)):
+        while True:
+            try:
+                with open(self.path(name)) as f:
+                    words = f.read().split()
+                if words and words[0].isdigit():
+                    return int(words[0])
+            except OSError:
+                pass
             if time.monotonic() > deadline:
                 raise Unavailable(f"{daemon} wrote no pid file {self.log_tail(daemon)}")
             time.sleep(0.1)
-
-    def _remember_pid(self, name):
-        with open(self.path(name)) as f:
-            self.pids.append(int(f.read().split()[0]))
 
     def log_tail(self, daemon):
         try:
