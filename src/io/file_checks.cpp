@@ -1,6 +1,10 @@
 #include "io/file_checks.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <system_error>
 
 namespace raylab {
@@ -24,6 +28,25 @@ bool checkRegularFile(const std::string& path, const std::string& what, std::uin
     }
     if (size > maxBytes) {
         error = what + " '" + path + "' is larger than " + std::to_string(maxBytes >> 20) + " MiB";
+        return false;
+    }
+    return true;
+}
+
+bool readRegularTextFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes,
+                         std::string& text, std::string& error) {
+    std::uintmax_t size = 0;
+    if (!checkRegularFile(path, what, maxBytes, size, error)) {
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = "cannot open " + what + " '" + path + "': " + std::strerror(errno);
+        return false;
+    }
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+        error = "cannot read " + what + " '" + path + "': " + std::strerror(errno);
         return false;
     }
     return true;

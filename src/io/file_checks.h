@@ -11,4 +11,9 @@ namespace raylab {
 bool checkRegularFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes,
                       std::uintmax_t& size, std::string& error);
 
+// The whole of a regular file of at most maxBytes bytes (checkRegularFile's checks first). False
+// with one line in `error`, "<what> '<path>'" and why.
+bool readRegularTextFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes,
+                         std::string& text, std::string& error);
+
 } // namespace raylab

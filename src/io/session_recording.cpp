@@ -6,8 +6,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -326,12 +324,7 @@ bool recordingFromJson(const std::string& text, SessionRecording& recording, std
     try {
         root = Json::parse(text);
     } catch (const Json::exception& e) {
-        std::string what = e.what();
-        if (const auto tagEnd = what.find("] ");
-            what.rfind("[json.", 0) == 0 && tagEnd != std::string::npos) {
-            what = what.substr(tagEnd + 2);
-        }
-        error = "invalid JSON: " + what;
+        error = jsonParseError(e.what());
         return false;
     }
     SessionRecording read;
@@ -343,17 +336,8 @@ bool recordingFromJson(const std::string& text, SessionRecording& recording, std
 }
 
 bool loadRecording(const std::string& path, SessionRecording& recording, std::string& error) {
-    std::uintmax_t size = 0;
-    if (!checkRegularFile(path, "recording", kMaxRecordingBytes, size, error)) {
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
     std::string text;
-    if (in) {
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    if (!in && !in.eof()) {
-        error = "cannot read recording '" + path + "': " + std::strerror(errno);
+    if (!readRegularTextFile(path, "recording", kMaxRecordingBytes, text, error)) {
         return false;
     }
     if (!recordingFromJson(text, recording, error)) {

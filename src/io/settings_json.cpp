@@ -7,9 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -437,24 +435,6 @@ private:
 // refused instead of read.
 constexpr std::size_t kMaxSettingsBytes = 16u << 20;
 
-bool readTextFile(const std::string& path, std::string& text, std::string& error) {
-    std::uintmax_t size = 0;
-    if (!checkRegularFile(path, "settings", kMaxSettingsBytes, size, error)) {
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = "cannot open settings '" + path + "': " + std::strerror(errno);
-        return false;
-    }
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-        error = "cannot read settings '" + path + "': " + std::strerror(errno);
-        return false;
-    }
-    return true;
-}
-
 } // namespace
 
 bool CameraBookmarks::any() const {
@@ -527,18 +507,7 @@ bool settingsFromJson(const std::string& text, RenderSettings& settings, Setting
     try {
         root = Json::parse(text);
     } catch (const Json::exception& e) {
-        // "[json.exception.parse_error.101] parse error at line 1, column 2: ..." without the tag.
-        std::string what = e.what();
-        if (const auto tagEnd = what.find("] ");
-            what.rfind("[json.", 0) == 0 && tagEnd != std::string::npos) {
-            what = what.substr(tagEnd + 2);
-        }
-        for (char& c : what) {
-            if (c == '\n' || c == '\r') {
-                c = ' ';
-            }
-        }
-        error = "invalid JSON: " + what;
+        error = jsonParseError(e.what());
         return false;
     }
     SettingsJsonExtras found;
@@ -564,7 +533,7 @@ bool loadSettingsFile(const std::string& path, RenderSettings& settings, Setting
                       std::string& error) {
     const SingleLineOnExit oneLine(error);
     std::string text;
-    if (!readTextFile(path, text, error)) {
+    if (!readRegularTextFile(path, "settings", kMaxSettingsBytes, text, error)) {
         return false;
     }
     std::string why;

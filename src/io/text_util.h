@@ -62,6 +62,17 @@ inline std::string singleLine(std::string_view text) {
     return out;
 }
 
+// The message of nlohmann::json's parse exception (e.what()) for a user: "invalid JSON: parse
+// error at line 1, column 2: ..." without the library's "[json.exception.parse_error.101] " tag,
+// on one line.
+inline std::string jsonParseError(std::string what) {
+    if (const auto tagEnd = what.find("] ");
+        what.rfind("[json.", 0) == 0 && tagEnd != std::string::npos) {
+        what = what.substr(tagEnd + 2);
+    }
+    return "invalid JSON: " + singleLine(what);
+}
+
 // Makes `error` singleLine() when the scope ends: the first statement of a function whose every
 // error, whatever text it quotes, must be one line.
 class SingleLineOnExit {
