@@ -73,53 +73,35 @@ void traverseBinary(const Bvh& bvh, const BoxRay& r, Limit limit, VisitLeaf visi
     }
 }
 
-template <class Cost> Hit closestHitBinary(const Bvh& bvh, const Ray& ray, Cost cost) {
-    const WatertightRay wray(ray);
+// The closest-hit rule, one triangle at a time: the nearest t, a tie to the lower scene index.
+// limit: the t of the best so far (the ray's tMax before), where traversal stops looking.
+struct ClosestTest {
+    const WatertightRay& ray;
+    float limit;
     Hit best;
-    if (bvh.nodes.empty() || !wray.valid) {
-        return best;
-    }
-    float limit = ray.tMax;
-    traverseBinary(
-        bvh, BoxRay(ray), [&] { return limit; },
-        [&](const BvhNode& leaf) {
-            for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
-                const BvhTriangle tri = bvh.leafTriangle(i);
-                float t, u, v;
-                if (intersectTriangle(wray, tri.v0, tri.v1, tri.v2, t, u, v) &&
-                    (t < best.t || (t == best.t && tri.sceneIndex < best.triangle))) {
-                    best = Hit{t, u, v, tri.sceneIndex};
-                    limit = t;
-                }
-            }
-            return false;
-        },
-        cost);
-    return best;
-}
-
-template <class Cost> bool anyHitBinary(const Bvh& bvh, const Ray& ray, Cost cost) {
-    const WatertightRay wray(ray);
-    if (bvh.nodes.empty() || !wray.valid) {
+    // Never stops the traversal.
+    bool operator()(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2, uint32_t index) {
+        float t, u, v;
+        if (intersectTriangle(ray, v0, v1, v2, t, u, v) &&
+            (t < best.t || (t == best.t && index < best.triangle))) {
+            best = Hit{t, u, v, index};
+            limit = t;
+        }
         return false;
     }
+};
+
+// The any-hit rule: the first triangle hit stops the traversal.
+struct AnyTest {
+    const WatertightRay& ray;
+    float limit; // the ray's tMax
     bool found = false;
-    traverseBinary(
-        bvh, BoxRay(ray), [&] { return ray.tMax; },
-        [&](const BvhNode& leaf) {
-            for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
-                const BvhTriangle tri = bvh.leafTriangle(i);
-                float t, u, v;
-                if (intersectTriangle(wray, tri.v0, tri.v1, tri.v2, t, u, v)) {
-                    found = true;
-                    return true;
-                }
-            }
-            return false;
-        },
-        cost);
-    return found;
-}
+    bool operator()(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2, uint32_t) {
+        float t, u, v;
+        found = intersectTriangle(ray, v0, v1, v2, t, u, v);
+        return found;
+    }
+};
 
 // At most 7 entries wait per level of the 8-wide tree, which is no deeper than the binary one.
 constexpr int kWideScalarStackSize = 7 * kScalarStackSize + 1;
@@ -127,8 +109,9 @@ constexpr int kWideScalarStackSize = 7 * kScalarStackSize + 1;
 // Visits the triangle blocks of the leaves whose boxes the ray enters, one child box at a time
 // with the scalar slab test, nearest child first, skipping entries that start beyond limit().
 // visitBlock(block) returns true to stop the traversal.
-template <class Limit, class VisitBlock>
-void traverseWideScalar(const Bvh& bvh, const BoxRay& r, Limit limit, VisitBlock visitBlock) {
+template <class Limit, class VisitBlock, class Cost>
+void traverseWideScalar(const Bvh& bvh, const BoxRay& r, Limit limit, VisitBlock visitBlock,
+                        Cost cost) {
     struct Entry {
         uint32_t child;
         float tNear;
@@ -145,6 +128,7 @@ void traverseWideScalar(const Bvh& bvh, const BoxRay& r, Limit limit, VisitBlock
             const uint32_t first = e.child & kWideFirstBlockMask;
             const uint32_t count = ((e.child >> kWideBlockShift) & (kWideMaxLeafBlocks - 1)) + 1;
             for (uint32_t b = first; b < first + count; ++b) {
+                cost.triangles(kWideLanes);
                 if (visitBlock(bvh.triangleBlocks[b])) {
                     return;
                 }
@@ -152,6 +136,7 @@ void traverseWideScalar(const Bvh& bvh, const BoxRay& r, Limit limit, VisitBlock
             continue;
         }
         const BvhWideNode& node = bvh.wideNodes[e.child];
+        cost.node();
         Entry hits[kWideLanes];
         int hitCount = 0;
         for (int c = 0; c < kWideLanes; ++c) {
@@ -177,86 +162,80 @@ void traverseWideScalar(const Bvh& bvh, const BoxRay& r, Limit limit, VisitBlock
     }
 }
 
-// Lane `lane` of a block as three vertices.
-void blockTriangle(const BvhTriangleBlock& block, int lane, glm::vec3 (&v)[3]) {
-    for (int k = 0; k < 3; ++k) {
-        v[k] =
-            glm::vec3(block.vertex[k][0][lane], block.vertex[k][1][lane], block.vertex[k][2][lane]);
+// Runs `test` (ClosestTest or AnyTest) on the triangles the ray's walk reaches: through the
+// binary nodes when the Bvh keeps them, else through the 8-wide nodes one child and lane at a
+// time.
+template <class Test, class Cost>
+void walkScalar(const Bvh& bvh, const Ray& ray, Test& test, Cost cost) {
+    if (!test.ray.valid) {
+        return;
     }
-}
-
-Hit closestHitWideScalar(const Bvh& bvh, const Ray& ray) {
-    const WatertightRay wray(ray);
-    Hit best;
-    if (bvh.wideNodes.empty() || !wray.valid) {
-        return best;
-    }
-    float limit = ray.tMax;
-    traverseWideScalar(
-        bvh, BoxRay(ray), [&] { return limit; },
-        [&](const BvhTriangleBlock& block) {
-            for (int lane = 0; lane < kWideLanes; ++lane) {
-                glm::vec3 v[3];
-                blockTriangle(block, lane, v);
-                const uint32_t index = block.sceneIndex[lane];
-                float t, u, w;
-                if (intersectTriangle(wray, v[0], v[1], v[2], t, u, w) &&
-                    (t < best.t || (t == best.t && index < best.triangle))) {
-                    best = Hit{t, u, w, index};
-                    limit = t;
+    const auto limit = [&] { return test.limit; };
+    if (!bvh.nodes.empty()) {
+        traverseBinary(
+            bvh, BoxRay(ray), limit,
+            [&](const BvhNode& leaf) {
+                for (uint32_t i = leaf.index; i < leaf.index + leaf.count; ++i) {
+                    const BvhTriangle tri = bvh.leafTriangle(i);
+                    if (test(tri.v0, tri.v1, tri.v2, tri.sceneIndex)) {
+                        return true;
+                    }
                 }
-            }
-            return false;
-        });
-    return best;
+                return false;
+            },
+            cost);
+    } else if (!bvh.wideNodes.empty()) {
+        traverseWideScalar(
+            bvh, BoxRay(ray), limit,
+            [&](const BvhTriangleBlock& block) {
+                for (int lane = 0; lane < kWideLanes; ++lane) {
+                    glm::vec3 v[3];
+                    for (int k = 0; k < 3; ++k) {
+                        v[k] = glm::vec3(block.vertex[k][0][lane], block.vertex[k][1][lane],
+                                         block.vertex[k][2][lane]);
+                    }
+                    if (test(v[0], v[1], v[2], block.sceneIndex[lane])) {
+                        return true;
+                    }
+                }
+                return false;
+            },
+            cost);
+    }
 }
 
-bool anyHitWideScalar(const Bvh& bvh, const Ray& ray) {
+template <class Cost> Hit closestHitScalarWith(const Bvh& bvh, const Ray& ray, Cost cost) {
     const WatertightRay wray(ray);
-    if (bvh.wideNodes.empty() || !wray.valid) {
-        return false;
-    }
-    bool found = false;
-    traverseWideScalar(
-        bvh, BoxRay(ray), [&] { return ray.tMax; },
-        [&](const BvhTriangleBlock& block) {
-            for (int lane = 0; lane < kWideLanes && !found; ++lane) {
-                glm::vec3 v[3];
-                blockTriangle(block, lane, v);
-                float t, u, w;
-                found = intersectTriangle(wray, v[0], v[1], v[2], t, u, w);
-            }
-            return found;
-        });
-    return found;
+    ClosestTest test{wray, ray.tMax, Hit{}};
+    walkScalar(bvh, ray, test, cost);
+    return test.best;
+}
+
+template <class Cost> bool anyHitScalarWith(const Bvh& bvh, const Ray& ray, Cost cost) {
+    const WatertightRay wray(ray);
+    AnyTest test{wray, ray.tMax};
+    walkScalar(bvh, ray, test, cost);
+    return test.found;
 }
 
 } // namespace
 
 Hit closestHitScalar(const Bvh& bvh, const Ray& ray) {
-    if (bvh.nodes.empty() && !bvh.wideNodes.empty()) {
-        return closestHitWideScalar(bvh, ray);
-    }
-    return closestHitBinary(bvh, ray, NoCost{});
+    return closestHitScalarWith(bvh, ray, NoCost{});
 }
 
-bool anyHitScalar(const Bvh& bvh, const Ray& ray) {
-    if (bvh.nodes.empty() && !bvh.wideNodes.empty()) {
-        return anyHitWideScalar(bvh, ray);
-    }
-    return anyHitBinary(bvh, ray, NoCost{});
-}
+bool anyHitScalar(const Bvh& bvh, const Ray& ray) { return anyHitScalarWith(bvh, ray, NoCost{}); }
 
 Hit closestHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
     if (bvh.wideNodes.empty()) {
-        return closestHitBinary(bvh, ray, CountCost{cost});
+        return closestHitScalarWith(bvh, ray, CountCost{cost});
     }
     return closestHitWideCounted(bvh, ray, cost);
 }
 
 bool anyHitCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost) {
     if (bvh.wideNodes.empty()) {
-        return anyHitBinary(bvh, ray, CountCost{cost});
+        return anyHitScalarWith(bvh, ray, CountCost{cost});
     }
     return anyHitWideCounted(bvh, ray, cost);
 }
