@@ -20,11 +20,6 @@ namespace raylab::viewer {
 
 namespace {
 
-double secondsBetween(std::chrono::steady_clock::time_point from,
-                      std::chrono::steady_clock::time_point to) {
-    return std::chrono::duration<double>(to - from).count();
-}
-
 // Clears to black what the picture does not cover: the panel's column (the panel's cache draws
 // only the pixels the panel covers), and before the first picture the whole framebuffer.
 void clearUncovered(const ViewLayout& layout, bool pictureDrawn) {

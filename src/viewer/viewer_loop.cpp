@@ -20,20 +20,6 @@
 
 namespace raylab::viewer {
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsBetween(Clock::time_point from, Clock::time_point to) {
-    return std::chrono::duration<double>(to - from).count();
-}
-
-Clock::time_point after(Clock::time_point t, double seconds) {
-    return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
-
-} // namespace
-
 ViewerLoop::ViewerLoop(const CommandLine& command, std::shared_ptr<const LoadedScene> scene,
                        std::optional<SessionRecording> replay)
     : command_(command), flags_(command.viewer), scene_(std::move(scene)),

@@ -61,6 +61,14 @@ private:
     using Clock = std::chrono::steady_clock;
     using TimePoint = Clock::time_point;
 
+    static double secondsBetween(TimePoint from, TimePoint to) {
+        return std::chrono::duration<double>(to - from).count();
+    }
+    static TimePoint after(TimePoint t, double seconds) {
+        return t +
+               std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    }
+
     // The loop's steps, in order (viewer_loop.cpp unless said otherwise).
     void waitForWake();
     void pollTracer();
