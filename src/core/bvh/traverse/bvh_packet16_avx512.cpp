@@ -279,14 +279,13 @@ RAYLAB_AVX512 inline int hitChildren16(const BvhWideNode& node, const Packet16& 
     return n;
 }
 
-// Goes on with the last of a node's n > 0 hit children and pushes the others.
-RAYLAB_AVX512 inline void descend16(const PacketEntry16* children, int n, PacketEntry16* stack,
-                                    int& size, uint32_t& ref, unsigned& active) {
-    for (int i = 0; i < n - 1; ++i) {
-        stack[size++] = children[i];
-    }
-    ref = children[n - 1].ref;
-    active = children[n - 1].lanes;
+// Goes on with the last of a node's n > 0 hit children, written at stack[size, size + n), and
+// keeps the others pushed.
+RAYLAB_AVX512 inline void descend16(int n, const PacketEntry16* stack, int& size, uint32_t& ref,
+                                    unsigned& active) {
+    size += n - 1;
+    ref = stack[size].ref;
+    active = stack[size].lanes;
 }
 
 // The 8 lanes of half h of a 16-lane mask.
@@ -332,17 +331,16 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
     alignas(64) float laneLimit[kPacket16Size];
     _mm512_store_ps(laneLimit, limit);
     const __m512 roundUp = _mm512_set1_ps(kBoxRoundUp);
-    PacketEntry16 stack[kWideStackSize];
+    PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
     int size = 0;
     uint32_t ref = 0;
     unsigned active = p.lanes;
     for (;;) {
         if (!isLeaf(ref)) {
-            PacketEntry16 children[kWideLanes];
             const int n = hitChildren16<true>(bvh.wideNodes[ref], p, limit, laneLimit, limitMax,
-                                              active, children);
+                                              active, stack + size);
             if (n > 0) {
-                descend16(children, n, stack, size, ref, active);
+                descend16(n, stack, size, ref, active);
                 continue;
             }
         } else {
@@ -376,18 +374,17 @@ RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
     const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.tMax);
     alignas(64) float laneTMax[kPacket16Size];
     _mm512_store_ps(laneTMax, p.tMax);
-    unsigned found = 0; // lanes with a hit
-    PacketEntry16 stack[kWideStackSize];
+    unsigned found = 0;                      // lanes with a hit
+    PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
     int size = 0;
     uint32_t ref = 0;
     unsigned active = p.lanes;
     for (;;) {
         if (!isLeaf(ref)) {
-            PacketEntry16 children[kWideLanes];
             const int n = hitChildren16<false>(bvh.wideNodes[ref], p, p.tMax, laneTMax, tMaxMax,
-                                               active, children);
+                                               active, stack + size);
             if (n > 0) {
-                descend16(children, n, stack, size, ref, active);
+                descend16(n, stack, size, ref, active);
                 continue;
             }
         } else {
