@@ -92,4 +92,27 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                                                 (shadowCandidates ? kShadowCandidates : 0));
 }
 
+void traceBlockInRowPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
+                          BlockAnswers& answers) {
+    const int count = blocked.rows[block];
+    const std::size_t first = block * kPacketSize;
+    const RayPacket* rays = &blocked.primary[first];
+    const RayPacket* shadowRays = &blocked.shadow[first];
+    HitPacket* hits = &answers.hits[first];
+    unsigned* occluded = &answers.occluded[first];
+    int k = 0;
+    for (; k + 1 < count; k += 2) {
+        closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
+        const unsigned both = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
+                                  ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1])
+                                  : 0u;
+        occluded[k] = both & 0xffu;
+        occluded[k + 1] = both >> kPacketSize;
+    }
+    if (k < count) {
+        closestHit8(bvh, rays[k], hits[k]);
+        occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;
+    }
+}
+
 } // namespace raylab::bench

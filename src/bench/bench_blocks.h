@@ -61,4 +61,10 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                 std::size_t block, const glm::vec3& light, bool shadowFrustum,
                 BlockAnswers& answers);
 
+// Traces block b as shadeLabBlock does for a scene it does not trace in blocks: its rows two by
+// two as packets of 16 rays (closestHit16 for the camera rays, anyHit16 for the shadow rays), a
+// last odd row as a packet of 8. Sets no flags.
+void traceBlockInRowPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
+                          BlockAnswers& answers);
+
 } // namespace raylab::bench

@@ -4,10 +4,42 @@
 
 namespace raylab::bench {
 
+namespace {
+
+// Every lane of every block of `answers` against the packets' answer for the same ray, bit for
+// bit: returns how many differ, and counts in cameraSeen and shadowSeen the rays compared (set,
+// not added to).
+std::size_t countMismatches(const BlockedRays& blocked, const BlockAnswers& answers,
+                            const std::vector<Hit>& packetHit,
+                            const std::vector<uint8_t>& packetAnswer, std::size_t& cameraSeen,
+                            std::size_t& shadowSeen) {
+    std::size_t mismatches = 0;
+    cameraSeen = 0;
+    shadowSeen = 0;
+    for (std::size_t p = 0; p < blocked.primary.size(); ++p) {
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            const std::size_t slot = p * kPacketSize + static_cast<std::size_t>(lane);
+            if (const uint32_t i = blocked.primaryRay[slot]; i != kNoRay) {
+                const Hit hit = answers.hits[p].hit(lane);
+                mismatches += std::memcmp(&hit, &packetHit[i], sizeof(Hit)) != 0 ? 1 : 0;
+                ++cameraSeen;
+            }
+            if (const uint32_t j = blocked.shadowRay[slot]; j != kNoRay) {
+                const bool answer = ((answers.occluded[p] >> lane) & 1u) != 0;
+                mismatches += answer != (packetAnswer[j] != 0) ? 1 : 0;
+                ++shadowSeen;
+            }
+        }
+    }
+    return mismatches;
+}
+
+} // namespace
+
 bool checkPacketsAndBlocks(const BenchRays& rays, const PacketedRays& packeted,
                            const RaylabAnswers& answers, const BlockedRays* blocked,
-                           const BlockAnswers* blockAnswers, BenchReport& report,
-                           std::string& error) {
+                           const BlockAnswers* blockAnswers, const BlockAnswers* rowPairAnswers,
+                           BenchReport& report, std::string& error) {
     // The packets' answer for each ray: ray k of a tile is lane k % 8 of the tile's packet
     // k / 8 (bench_rays.h).
     std::vector<Hit> packetHit(rays.primary.size());
@@ -28,32 +60,26 @@ bool checkPacketsAndBlocks(const BenchRays& rays, const PacketedRays& packeted,
             report.packetMismatches += (answers.occluded[j] != 0) != (packetAnswer[j] != 0) ? 1 : 0;
         }
     }
-    if (blocked == nullptr || blockAnswers == nullptr) {
+    if (blocked == nullptr) {
         return true;
     }
-    // Every lane of every block against the packets' answer for the same ray, bit for bit.
     std::size_t cameraSeen = 0, shadowSeen = 0;
-    for (std::size_t p = 0; p < blocked->primary.size(); ++p) {
-        for (int lane = 0; lane < kPacketSize; ++lane) {
-            const std::size_t slot = p * kPacketSize + static_cast<std::size_t>(lane);
-            if (const uint32_t i = blocked->primaryRay[slot]; i != kNoRay) {
-                const Hit blockHit = blockAnswers->hits[p].hit(lane);
-                report.blockMismatches +=
-                    std::memcmp(&blockHit, &packetHit[i], sizeof(Hit)) != 0 ? 1 : 0;
-                ++cameraSeen;
-            }
-            if (const uint32_t j = blocked->shadowRay[slot]; j != kNoRay) {
-                const bool blockAnswer = ((blockAnswers->occluded[p] >> lane) & 1u) != 0;
-                report.blockMismatches += blockAnswer != (packetAnswer[j] != 0) ? 1 : 0;
-                ++shadowSeen;
-            }
-        }
+    if (blockAnswers != nullptr) {
+        report.blockMismatches = countMismatches(*blocked, *blockAnswers, packetHit, packetAnswer,
+                                                 cameraSeen, shadowSeen);
+    }
+    if (rowPairAnswers != nullptr) {
+        report.packet16Mismatches = countMismatches(*blocked, *rowPairAnswers, packetHit,
+                                                    packetAnswer, cameraSeen, shadowSeen);
     }
     if (cameraSeen != rays.primary.size() || shadowSeen != rays.shadow.size()) {
         error = "the blocks hold " + std::to_string(cameraSeen) + " camera and " +
                 std::to_string(shadowSeen) + " shadow rays, not " +
                 std::to_string(rays.primary.size()) + " and " + std::to_string(rays.shadow.size());
         return false;
+    }
+    if (blockAnswers == nullptr) {
+        return true;
     }
     report.cameraBlocks = blocked->blocks();
     for (std::size_t b = 0; b < blocked->blocks(); ++b) {

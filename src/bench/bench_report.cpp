@@ -183,6 +183,9 @@ void printText(std::ostream& out, const BenchReport& r) {
         if (r.blocks) {
             printRow(out, "raylab (blocks)", r.raylabBlocks);
         }
+        if (r.packets16) {
+            printRow(out, "raylab (16-ray packets)", r.raylabPackets16);
+        }
         printRow(out, "raylab (1 ray)", r.raylabSingle);
     } else {
         printRow(out, "raylab (1 ray)", r.raylab);
@@ -217,6 +220,10 @@ void printText(std::ostream& out, const BenchReport& r) {
             << format("%.1f", percent(r.cameraBlocksThroughCandidates, r.cameraBlocks))
             << "%), shadow " << r.shadowBlocksThroughCandidates << " of " << r.shadowBlocks << " ("
             << format("%.1f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks)) << "%)\n";
+    }
+    if (r.packets16) {
+        printRatio(out, "16-ray packets / packets", r.raylabPackets16, r.raylabPackets, r);
+        out << "answers differing from packets: " << r.packet16Mismatches << "\n";
     }
     if (r.passes) {
         out << "renderer passes, M pixel samples/s (1 thread, " << threadsText(r)
@@ -287,6 +294,12 @@ void printJson(std::ostream& out, const BenchReport& r) {
             << ", \"shadow_candidate_fraction\": "
             << format("%.4f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks) / 100.0);
     }
+    out << ", \"packets16\": " << (r.packets16 ? "true" : "false");
+    if (r.packets16) {
+        out << ",\n \"raylab_packets16\": ";
+        jsonFigures(out, r.raylabPackets16);
+        out << ", \"packet16_mismatches\": " << r.packet16Mismatches;
+    }
     if (r.passes) {
         const auto passJson = [&out](const PassFigures& f) {
             out << "{\"one_thread\": {\"msamples_per_s\": " << format("%.3f", f.oneThread)
@@ -343,6 +356,9 @@ void printJson(std::ostream& out, const BenchReport& r) {
             << ", \"disagreeing_bounce_hits\": " << disagreeingBounces;
         if (r.blocks) {
             jsonRatios(out, r.raylabBlocks, best, "blocks_");
+        }
+        if (r.packets16) {
+            jsonRatios(out, r.raylabPackets16, best, "packets16_");
         }
     }
     if (r.workload == Workload::Bounce) {

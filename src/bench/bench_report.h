@@ -47,8 +47,8 @@ struct BenchReport {
     int bvhDepth = 0;
     std::size_t leafReferences = 0; // leaf triangles, pre-split copies included
     std::string traversal;          // "8-wide AVX2" or "scalar binary"
-    // The renderer's own path for this scene ("blocks", "packets" or "single rays"; bounce rays
-    // one by one whatever the path), and its figures.
+    // The renderer's own path for this scene ("blocks", "packets16", "packets" or "single rays";
+    // bounce rays one by one whatever the path), and its figures.
     std::string raylabPath;
     TracerFigures raylab;
     bool packets = false;
@@ -61,6 +61,11 @@ struct BenchReport {
     std::size_t blockMismatches = 0; // answers where blocks and packets differ (must be 0)
     std::size_t cameraBlocks = 0, cameraBlocksThroughCandidates = 0;
     std::size_t shadowBlocks = 0, shadowBlocksThroughCandidates = 0; // blocks with shadow rays
+    // The same blocks' rows two by two as packets of 16 rays (traceBlockInRowPairs: AVX-512
+    // where the CPU has it), timed in the same turns.
+    bool packets16 = false;
+    TracerFigures raylabPackets16;
+    std::size_t packet16Mismatches = 0; // answers where they and packets differ (must be 0)
 
     bool hasEmbree = false;
     std::string embreeAbsent = "not built in"; // why there are no Embree figures

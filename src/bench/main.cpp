@@ -8,9 +8,11 @@
 // converted to Embree's layouts before timing (embree_rays.h), then compares their answers.
 // raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and, in the same turns, 8 x 8
 // pixel blocks through frustum candidates as the renderer does (core/bvh_frustum.h,
-// bench_blocks.h) and single rays; bounce rays one by one in every case. Bench-only flags:
-// BenchOptions in io/command_line.h. Exit codes: 2 usage, 1 other errors, too many hits disagreeing
-// with Embree, or packets, blocks and single rays not giving identical answers.
+// bench_blocks.h), the same blocks' rows two by two as packets of 16 rays (AVX-512 where the CPU
+// has it, as the renderer traces meshes) and single rays; bounce rays one by one in every case.
+// Bench-only flags: BenchOptions in io/command_line.h. Exit codes: 2 usage, 1 other errors, too
+// many hits disagreeing with Embree, or packets, blocks, 16-ray packets and single rays not giving
+// identical answers.
 
 #include "bench_blocks.h"
 #include "bench_checks.h"
@@ -221,7 +223,18 @@ int run(int argc, char** argv) {
     // timing.
     const bool blocks = packets && !flags.noBlocks;
     report.blocks = blocks;
+    // The same blocks' rows two by two as packets of 16 rays (bench_blocks.h), as the renderer
+    // traces a scene it does not trace in blocks.
+    const bool packets16 = blocks;
+    report.packets16 = packets16;
     const BlockedRays blocked = blocks ? blockRays(rays) : BlockedRays{};
+    BlockAnswers rowPairAnswers = makeBlockAnswers(blocked);
+    const TileTracer rowPairTile = [&](std::size_t tile) {
+        for (std::size_t b = blocked.blockOffset[tile]; b < blocked.blockOffset[tile + 1]; ++b) {
+            traceBlockInRowPairs(bvh, blocked, b, rowPairAnswers);
+        }
+        traceBounces(tile);
+    };
     BlockAnswers blockAnswers = makeBlockAnswers(blocked);
     const glm::vec3 light = cl.settings.light.position;
     const bool shadowFrustum = cl.settings.shadowEpsilon >= 0.0f; // as shadeLabBlock
@@ -237,7 +250,8 @@ int run(int argc, char** argv) {
     // `turns` trace the whole workload; `bounceTurns` its bounce rays alone.
     std::vector<Turn> turns;
     std::vector<Turn> bounceTurns;
-    for (TracerFigures* f : {&report.raylabPackets, &report.raylabBlocks, &report.raylabSingle}) {
+    for (TracerFigures* f : {&report.raylabPackets, &report.raylabBlocks, &report.raylabPackets16,
+                             &report.raylabSingle}) {
         f->rays = rays.total();
         f->buildSeconds = raylabBuildSeconds;
     }
@@ -246,6 +260,9 @@ int run(int argc, char** argv) {
     }
     if (blocks) {
         turns.push_back({&blockTile, {}, &report.raylabBlocks});
+    }
+    if (packets16) {
+        turns.push_back({&rowPairTile, {}, &report.raylabPackets16});
     }
     turns.push_back({&singleTile, {}, &report.raylabSingle});
     report.bounceRaylab.rays = rays.bounce.size();
@@ -297,8 +314,12 @@ int run(int argc, char** argv) {
     }
     // The renderer's own path for this scene.
     const bool rendererBlocks = blocks && tracesInBlocks(bvh);
-    report.raylabPath = rendererBlocks ? "blocks" : packets ? "packets" : "single rays";
+    report.raylabPath = rendererBlocks ? "blocks"
+                        : packets16    ? "packets16"
+                        : packets      ? "packets"
+                                       : "single rays";
     report.raylab = rendererBlocks ? report.raylabBlocks
+                    : packets16    ? report.raylabPackets16
                     : packets      ? report.raylabPackets
                                    : report.raylabSingle;
 
@@ -313,10 +334,10 @@ int run(int argc, char** argv) {
         }
     }
 #endif
-    if (packets && !checkPacketsAndBlocks(rays, packeted,
-                                          RaylabAnswers{hits, occluded, packetHits, packetOccluded},
-                                          blocks ? &blocked : nullptr,
-                                          blocks ? &blockAnswers : nullptr, report, error)) {
+    if (packets && !checkPacketsAndBlocks(
+                       rays, packeted, RaylabAnswers{hits, occluded, packetHits, packetOccluded},
+                       blocks ? &blocked : nullptr, blocks ? &blockAnswers : nullptr,
+                       packets16 ? &rowPairAnswers : nullptr, report, error)) {
         std::cerr << "raylab-bench: " << error << "\n";
         return 1;
     }
@@ -349,6 +370,11 @@ int run(int argc, char** argv) {
     if (report.packetMismatches != 0) {
         std::cerr << "raylab-bench: " << report.packetMismatches
                   << " packet answers differ from the single-ray ones\n";
+        return 1;
+    }
+    if (report.packet16Mismatches != 0) {
+        std::cerr << "raylab-bench: " << report.packet16Mismatches
+                  << " 16-ray packet answers differ from the packet ones\n";
         return 1;
     }
     if (report.blockMismatches != 0) {

@@ -1,7 +1,9 @@
 // Packets of rays (bvh_packet.h) against single rays and the scalar reference: every lane's
-// answer bit for bit, whatever the other lanes hold.
+// answer bit for bit, whatever the other lanes hold; in packets of 8 and of 16.
 
 #include "accel_check.h"
+#include "accel_packet16_check.h"
+#include "accel_packet_rays.h"
 #include "accel_scenes.h"
 #include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
@@ -14,8 +16,6 @@
 
 namespace raylab::accel_test {
 namespace {
-
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 // Traces `rays` in packets of `packetSize` consecutive rays (the last one partial) and expects
 // each lane to equal closestHit, closestHitScalar, anyHit and anyHitScalar of its ray. Returns
@@ -48,36 +48,13 @@ int expectPacketsEqualSingle(const Bvh& bvh, const std::vector<Ray>& rays,
             hits += single.found() ? 1 : 0;
         }
     }
+    // The same rays in packets of 16, on every path this CPU has (accel_packet16_check.h).
+    for (const Packet16Path path : packet16Paths()) {
+        if (packetSize == kPacketSize) {
+            EXPECT_EQ(expectPackets16(bvh, rays, path), hits);
+        }
+    }
     return hits;
-}
-
-// Camera rays of a width x height image in runs of 8 along rows (as the renderer makes them).
-std::vector<Ray> cameraRays(const Camera& camera, int width, int height) {
-    const PrimaryRays primary(camera, width, height);
-    std::vector<Ray> rays;
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            rays.push_back(
-                primary.through(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
-        }
-    }
-    return rays;
-}
-
-// Shadow rays from the closest hits of `rays` towards `light` (eps = 1e-3, as the lab's).
-std::vector<Ray> shadowRaysOf(const Bvh& bvh, const std::vector<Ray>& rays,
-                              const glm::vec3& light) {
-    std::vector<Ray> shadows;
-    for (const Ray& ray : rays) {
-        const Hit hit = closestHit(bvh, ray);
-        if (hit.found()) {
-            const glm::vec3 point = ray.origin + hit.t * ray.direction;
-            const glm::vec3 r = light - point;
-            const float distance = std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z);
-            shadows.push_back(Ray{point, r / distance, 1e-3f, distance - 1e-3f});
-        }
-    }
-    return shadows;
 }
 
 TEST(BvhPacket, RandomSoupRandomRays) {
@@ -125,30 +102,14 @@ TEST(BvhPacket, MixedPermutationsInOnePacket) {
     // Each packet holds rays along all six axis directions and diagonals, so lanes disagree
     // on kz and on the direction's sign.
     const Bvh bvh = buildBvh(makeTriangleSoup(5000, 0.1f, 16));
-    const glm::vec3 directions[8] = {{1, 0.1f, 0.2f},    {-0.1f, 1, 0.3f},    {0.2f, -0.3f, -1},
-                                     {-1, 0.4f, 0.1f},   {0.3f, -1, 0.2f},    {0.1f, 0.2f, 1},
-                                     {0.5f, 0.5f, 0.5f}, {-0.6f, 0.6f, -0.6f}};
-    std::mt19937 rng(17);
-    std::uniform_real_distribution<float> u(-0.5f, 0.5f);
-    std::vector<Ray> rays;
-    for (int i = 0; i < 8000; ++i) {
-        rays.push_back(Ray{{u(rng), u(rng), u(rng)}, directions[(i * 3 + i / 8) % 8]});
-    }
+    const std::vector<Ray> rays = mixedDirectionRays(8000, /*perLane=*/true, 17);
     EXPECT_GT(expectPacketsEqualSingle(bvh, rays), 0);
 }
 
 TEST(BvhPacket, InvalidRaysInSomeLanes) {
     const Bvh bvh = buildBvh(makeTriangleSoup(5000, 0.1f, 18));
     std::vector<Ray> rays = makeRandomRays(4000, 19);
-    for (std::size_t i = 0; i < rays.size(); i += 3) {
-        switch (i % 5) {
-        case 0: rays[i].direction = glm::vec3(0.0f); break;
-        case 1: rays[i].origin.y = kNaN; break;
-        case 2: rays[i].direction.z = kInfinity; break;
-        case 3: rays[i].tMax = kNaN; break;
-        default: rays[i].tMin = kNaN; break;
-        }
-    }
+    invalidateEveryThird(rays);
     expectPacketsEqualSingle(bvh, rays);
 }
 

@@ -55,6 +55,10 @@ struct Bvh {
     std::vector<BvhTriangle> triangles;
     std::size_t skippedTriangles = 0; // invalid ones (non-finite or zero area), never hit
     std::size_t leafReferences = 0;   // leaf triangles: valid triangles plus pre-split copies
+    // How far every node box is widened on each side (world units), so that box tests never cull
+    // a triangle the watertight test hits; a box made while tracing (a triangle's own bounds)
+    // must be widened as much.
+    float boxPad = 0.0f;
 
     // The SIMD form (bvh_wide.h), built when the CPU runs AVX2 and BvhBuildOptions::simd is set.
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.

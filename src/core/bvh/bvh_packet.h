@@ -21,4 +21,17 @@ unsigned anyHit8(const Bvh& bvh, const RayPacket& rays);
 void closestHit8(const Bvh& bvh, const Ray* rays, int count, Hit* hits);
 void anyHit8(const Bvh& bvh, const Ray* rays, int count, bool* occluded);
 
+// Packets of 16 rays: two RayPackets, `low` as lanes 0-7 and `high` as lanes 8-15, with the
+// same answers as closestHit8 / anyHit8 of each (so as the single rays). Where the CPU has
+// AVX-512 (bvhPacket16Supported) they are traced as one packet of 16 rays, else one after the
+// other. Coherent rays gain the most: the pixels of two neighbouring rows, or their shadow rays.
+void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
+                  HitPacket& highHits);
+
+// Bits 0-7: the lanes of low.lanes whose ray hits a triangle; bits 8-15: those of high.lanes.
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high);
+
+// True when closestHit16 and anyHit16 trace 16 rays at once (AVX-512F and AVX2).
+bool bvhPacket16Supported();
+
 } // namespace raylab

@@ -1,6 +1,7 @@
 // shadeLabBlock: the packets of an image block share one frustum walk for their camera rays and
-// one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles, and
-// every packet of a large scene, are traced one by one through the BVH. Either way each lane's
+// one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles are
+// traced one by one through the BVH, and the rows of a large scene's block two by two as packets
+// of 16 rays where the CPU has AVX-512 (closestHit16), else one by one. Either way each lane's
 // radiance is shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
@@ -9,6 +10,7 @@
 #include "integrators/lab_shading_stages.h"
 
 #include <array>
+#include <cstdint>
 #include <utility>
 
 namespace raylab {
@@ -21,12 +23,39 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
     return {((void)I, Packet(RayPacket::Unset{}))...};
 }
 
+// shadeLab8 of two packets (two rows of a block) traced as 16 rays: their camera rays in one
+// closestHit16, their shadow rays in one anyHit16. Call only where bvhPacket16Supported() and
+// bvh.wideNodes is not empty.
+void shadeRowPair(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                  const RayPacket* rays, RadiancePacket* radiance, RayCounts& counts) {
+    HitPacket hits[2] = {HitPacket(RayPacket::Unset{}), HitPacket(RayPacket::Unset{})};
+    closestHit16(bvh, rays[0], rays[1], hits[0], hits[1]);
+    ShadingBeforeShadow stages[2];
+    RayPacket shadowRays[2] = {RayPacket(RayPacket::Unset{}), RayPacket(RayPacket::Unset{})};
+    for (int k = 0; k < 2; ++k) {
+        counts.primary += static_cast<std::uint64_t>(laneCount(rays[k].lanes));
+        beginShade(scene, bvh, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
+    }
+    const unsigned occluded = (shadowRays[0].lanes | shadowRays[1].lanes) != 0
+                                  ? anyHit16(bvh, shadowRays[0], shadowRays[1])
+                                  : 0u;
+    finishShade(stages[0], occluded & 0xffu, radiance[0]);
+    finishShade(stages[1], occluded >> kPacketSize, radiance[1]);
+}
+
 // shadeLabBlock, with the camera rays' frustum from `camera` and `rect` when camera is set.
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
                 RadiancePacket* radiance, RayCounts& counts) {
     if (!tracesInBlocks(bvh)) {
-        for (int k = 0; k < count; ++k) {
+        static const bool pairs = bvhPacket16Supported();
+        int k = 0;
+        if (pairs && !bvh.wideNodes.empty()) {
+            for (; k + 1 < count; k += 2) {
+                shadeRowPair(scene, bvh, settings, &rays[k], &radiance[k], counts);
+            }
+        }
+        for (; k < count; ++k) {
             shadeLab8(scene, bvh, settings, rays[k], radiance[k], counts);
         }
         return;

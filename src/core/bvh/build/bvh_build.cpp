@@ -223,6 +223,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     // watertight test's edge decisions, and far below any visible size).
     const float slack = std::ldexp(std::max(magnitude, 1e-30f), -21);
     const float pad = std::ldexp(std::max(magnitude, 1e-30f), -19);
+    bvh.boxPad = pad;
     presplitRecords(scene, options.presplitBudget, slack, team, records);
     BuildTask root;
     root.bounds = boundsOnTeam(records, team);

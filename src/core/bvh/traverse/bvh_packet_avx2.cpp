@@ -23,25 +23,6 @@ namespace {
 
 using namespace packet_lanes;
 
-// Slab test of child c's box against every lane (bvh_box_ray.h's hitBox per lane: the near
-// plane is the smaller of the two distances). Returns the lanes whose (tMin, limit] overlaps the
-// box, and their entry distances.
-RAYLAB_AVX2 inline unsigned hitChild(const BvhWideNode& node, int c, const PacketRays& p,
-                                     __m256 limit, __m256& tNear) {
-    __m256 tn = p.tMin, tf = limit;
-    for (int a = 0; a < 3; ++a) {
-        const __m256 t0 = _mm256_mul_ps(
-            _mm256_sub_ps(_mm256_set1_ps(node.lower[a][c]), p.origin[a]), p.inverse[a]);
-        const __m256 t1 = _mm256_mul_ps(
-            _mm256_sub_ps(_mm256_set1_ps(node.upper[a][c]), p.origin[a]), p.inverse[a]);
-        tn = _mm256_max_ps(tn, _mm256_min_ps(t0, t1));
-        tf = _mm256_min_ps(tf, _mm256_max_ps(t0, t1));
-    }
-    tNear = tn;
-    return static_cast<unsigned>(_mm256_movemask_ps(
-        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
-}
-
 struct PacketEntry {
     __m256 tNear; // per lane
     uint32_t ref;

@@ -1,10 +1,11 @@
 #pragma once
-// The per-lane triangle work of the AVX2 packet traversals (internal to core; only files that
-// run on CPUs with AVX2 may include it): one triangle of a BvhTriangleBlock against the 8 rays
-// of a PacketRays, and the closest hit per lane kept as (t, triangle index), so that the order
-// in which triangles are tested never changes an answer.
+// The per-lane work of the AVX2 packet traversals (internal to core; only files that run on CPUs
+// with AVX2 may include it): a child box of a node against the 8 rays of a PacketRays, one
+// triangle of a BvhTriangleBlock against them, and the closest hit per lane kept as (t, triangle
+// index), so that the order in which triangles are tested never changes an answer.
 
 #include "bvh/bvh.h"
+#include "bvh/traverse/bvh_box_ray.h"
 #include "bvh/traverse/bvh_packet_setup.h"
 #include "triangle_intersection.h"
 
@@ -129,6 +130,25 @@ RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& bloc
     best.e2 = _mm256_load_ps(e2);
     best.det = _mm256_load_ps(det);
     best.triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(bi));
+}
+
+// Slab test of child c's box against every lane (bvh_box_ray.h's hitBox per lane: the near
+// plane is the smaller of the two distances). Returns the lanes whose (tMin, limit] overlaps the
+// box, and their entry distances.
+RAYLAB_AVX2 inline unsigned hitChild(const BvhWideNode& node, int c, const PacketRays& p,
+                                     __m256 limit, __m256& tNear) {
+    __m256 tn = p.tMin, tf = limit;
+    for (int a = 0; a < 3; ++a) {
+        const __m256 t0 = _mm256_mul_ps(
+            _mm256_sub_ps(_mm256_set1_ps(node.lower[a][c]), p.origin[a]), p.inverse[a]);
+        const __m256 t1 = _mm256_mul_ps(
+            _mm256_sub_ps(_mm256_set1_ps(node.upper[a][c]), p.origin[a]), p.inverse[a]);
+        tn = _mm256_max_ps(tn, _mm256_min_ps(t0, t1));
+        tf = _mm256_min_ps(tf, _mm256_max_ps(t0, t1));
+    }
+    tNear = tn;
+    return static_cast<unsigned>(_mm256_movemask_ps(
+        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
 }
 
 // No hit yet in any lane.

@@ -1,0 +1,71 @@
+// 16-ray packet dispatch: the AVX-512 traversal (bvh_packet16_avx512.cpp) where the CPU has it,
+// else two 8-ray packets; the lanes the packet leaves out (another ray permutation) go to the
+// exact single-ray path, as in closestHit8 / anyHit8.
+
+#include "bvh/bvh_packet.h"
+#include "bvh/traverse/bvh_packet16_traverse.h"
+
+namespace raylab {
+
+bool bvhPacket16Supported() {
+#if defined(__x86_64__) || defined(__i386__)
+    return bvhSimdSupported() && __builtin_cpu_supports("avx512f");
+#else
+    return false;
+#endif
+}
+
+namespace {
+
+Packet16Path defaultPath() {
+    static const bool avx512 = bvhPacket16Supported();
+    return avx512 ? Packet16Path::Avx512 : Packet16Path::TwoPackets8;
+}
+
+// Ray i of the 16 lanes.
+Ray rayOf(const RayPacket& low, const RayPacket& high, int i) {
+    return i < kPacketSize ? low.ray(i) : high.ray(i - kPacketSize);
+}
+
+} // namespace
+
+void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
+                  HitPacket& highHits, Packet16Path path) {
+    if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
+        closestHit8(bvh, low, lowHits);
+        closestHit8(bvh, high, highHits);
+        return;
+    }
+    const unsigned single = closestHitPacket16(bvh, low, high, lowHits, highHits);
+    for (unsigned m = single; m != 0; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        HitPacket& hits = i < kPacketSize ? lowHits : highHits;
+        hits.set(i % kPacketSize, closestHit(bvh, rayOf(low, high, i)));
+    }
+}
+
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path) {
+    if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
+        return anyHit8(bvh, low) | anyHit8(bvh, high) << kPacketSize;
+    }
+    unsigned occluded = 0;
+    const unsigned single = anyHitPacket16(bvh, low, high, occluded);
+    for (unsigned m = single; m != 0; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        if (anyHit(bvh, rayOf(low, high, i))) {
+            occluded |= 1u << i;
+        }
+    }
+    return occluded;
+}
+
+void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
+                  HitPacket& highHits) {
+    closestHit16(bvh, low, high, lowHits, highHits, defaultPath());
+}
+
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high) {
+    return anyHit16(bvh, low, high, defaultPath());
+}
+
+} // namespace raylab

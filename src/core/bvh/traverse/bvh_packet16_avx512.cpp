@@ -1,0 +1,460 @@
+// Packet traversal of the 8-wide BVH for 16 rays (AVX-512F for the 16-lane entry distances,
+// masks and reductions; the per-lane tests are the 8-lane packets' on each half). For coherent
+// rays a node costs about what it costs one ray, as in Embree's coherent packets:
+// - a frustum (the interval of the lanes' origins and inverse directions) tests all 8 children
+//   at once and leaves out every child no lane can enter;
+// - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
+//   every active lane (a superset of the lanes that enter it) and the frustum's entry distance;
+// - only the other candidates are tested lane by lane (hitChild on each half);
+// - in a leaf, the frustum leaves out the triangles whose (padded) bounding box no lane can
+//   enter, and each other triangle is tested against the active lanes, 8 at a time (a half
+//   without an active lane is skipped).
+// Keeping a box or a triangle for a lane that misses it costs time, never an answer.
+//
+// Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with the same helpers: both halves
+// are set up by makePacket and traced together only when they share the ray permutation (else
+// each is its own 8-lane packet); triangles go through intersectTriangle8 / keepTriangle /
+// hitLanes, so t, u, v and the triangle are intersectTriangle's, lanes with an edge function of
+// exactly zero go to intersectTriangle itself, a lane keeps the minimum of (t, triangle index),
+// and a box is dropped for a lane only when it starts beyond that lane's own closest hit
+// (kBoxRoundUp): every culling test above is a superset of the lanes' own slab tests.
+
+// GCC 12's AVX-512 intrinsics start from _mm512_undefined_*() values, which -Wuninitialized
+// reports inside the intrinsics' headers: silenced before the first include of them.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+#include "bvh/traverse/bvh_packet16_traverse.h"
+
+#if defined(__x86_64__) || defined(__i386__)
+
+#include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_packet_lanes.h"
+#include "bvh/traverse/bvh_packet_traverse.h"
+
+// AVX-512 Foundation on top of the AVX2 helpers (bvhPacket16Supported checks both).
+#define RAYLAB_AVX512 __attribute__((target("avx2,popcnt,avx512f")))
+
+namespace raylab {
+
+namespace {
+
+using namespace packet_lanes;
+
+// Two 8-lane registers as one of 16: lo in lanes 0-7, hi in lanes 8-15.
+RAYLAB_AVX512 inline __m512 join(__m256 lo, __m256 hi) {
+    return _mm512_castpd_ps(
+        _mm512_insertf64x4(_mm512_castps_pd(_mm512_castps256_ps512(lo)), _mm256_castps_pd(hi), 1));
+}
+
+// Lanes 0-7 (h = 0) or 8-15 (h = 1) of x.
+RAYLAB_AVX512 inline __m256 half(__m512 x, int h) {
+    return _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(x), h));
+}
+
+// Bounds of the 16 rays' box test, for all 8 children of a node at once: per axis, the interval
+// of the lanes' origins and of their inverse directions, so that for every lane
+// (bound - origin) * inverse lies within [min, max] of the products at the intervals' ends
+// (float subtraction and multiplication round monotonically). Valid when, per axis, every lane's
+// inverse has one sign: then the near bound is the same plane of the box for all of them.
+struct Frustum {
+    bool valid = false;
+    int nearOffset[3], farOffset[3];    // into BvhWideNode's floats, as in bvh_traverse_avx2.cpp
+    __m256 nearOrigin[3], farOrigin[3]; // the origins that make (bound - origin) smallest, largest
+    __m256 inverseMin[3], inverseMax[3];
+    __m256 tMin; // the lanes' smallest tMin
+};
+
+// Each lane's box-test constants as floats, for tests of one lane's ray.
+struct alignas(64) LaneScalars {
+    float origin[3][kPacket16Size], inverse[3][kPacket16Size], tMin[kPacket16Size];
+};
+
+// The 16 rays: both halves' PacketRays (sharing k), and the box test's fields joined.
+struct Packet16 {
+    PacketRays half[2];
+    const RayPacket* rays[2];
+    unsigned lanes = 0; // 16 bits
+    __m512 origin[3], inverse[3];
+    __m512 tMin, tMax;
+    Frustum frustum;
+    LaneScalars scalars;
+};
+
+RAYLAB_AVX512 inline void makeFrustum(Packet16& p) {
+    Frustum& f = p.frustum;
+    const __mmask16 lanes = static_cast<__mmask16>(p.lanes);
+    f.valid = p.lanes != 0;
+    for (int a = 0; a < 3 && f.valid; ++a) {
+        const unsigned negative =
+            _mm512_mask_cmp_ps_mask(lanes, p.inverse[a], _mm512_setzero_ps(), _CMP_LT_OQ);
+        f.valid = negative == 0 || negative == p.lanes;
+        const int nearIsUpper = negative != 0 ? 1 : 0;
+        // lower[a] starts at float a * 8, upper[a] at 24 + a * 8.
+        f.nearOffset[a] = nearIsUpper * 24 + a * kWideLanes;
+        f.farOffset[a] = (1 - nearIsUpper) * 24 + a * kWideLanes;
+        const float originMin = _mm512_mask_reduce_min_ps(lanes, p.origin[a]);
+        const float originMax = _mm512_mask_reduce_max_ps(lanes, p.origin[a]);
+        // Towards +a the near distance is smallest from the largest origin, the far distance
+        // largest from the smallest one; towards -a the other way round.
+        f.nearOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMin : originMax);
+        f.farOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMax : originMin);
+        f.inverseMin[a] = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.inverse[a]));
+        f.inverseMax[a] = _mm256_set1_ps(_mm512_mask_reduce_max_ps(lanes, p.inverse[a]));
+    }
+    f.tMin = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.tMin));
+}
+
+// Of 8 boxes given as lower[3][8] then upper[3][8] floats (BvhWideNode's layout), those some
+// lane may enter before `limitMax` (the lanes' largest limit): a superset of the boxes any lane's
+// own slab test keeps (hitChild16), since each lane's near distance is at least the frustum's
+// and its far distance at most the frustum's. Also their frustum near distances.
+RAYLAB_AVX512 inline unsigned frustumBoxes(const float* bounds, const Frustum& f, float limitMax,
+                                           __m256& tNear) {
+    __m256 tn = f.tMin, tf = _mm256_set1_ps(limitMax);
+    for (int a = 0; a < 3; ++a) {
+        const __m256 xn = _mm256_sub_ps(_mm256_load_ps(bounds + f.nearOffset[a]), f.nearOrigin[a]);
+        const __m256 xf = _mm256_sub_ps(_mm256_load_ps(bounds + f.farOffset[a]), f.farOrigin[a]);
+        tn = _mm256_max_ps(tn, _mm256_min_ps(_mm256_mul_ps(xn, f.inverseMin[a]),
+                                             _mm256_mul_ps(xn, f.inverseMax[a])));
+        tf = _mm256_min_ps(tf, _mm256_max_ps(_mm256_mul_ps(xf, f.inverseMin[a]),
+                                             _mm256_mul_ps(xf, f.inverseMax[a])));
+    }
+    tNear = tn;
+    return static_cast<unsigned>(_mm256_movemask_ps(
+        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
+}
+
+// The triangles of a block that some lane may hit before `limitMax`: those whose bounding box,
+// widened by `pad` (Bvh::boxPad) as every node box is, passes frustumBoxes (a ray the watertight
+// test finds on a triangle enters that box, as it enters every node box holding the triangle);
+// all 8 without a valid frustum.
+RAYLAB_AVX512 inline unsigned frustumTriangles(const BvhTriangleBlock& block, const Frustum& f,
+                                               float pad, float limitMax) {
+    if (!f.valid) {
+        return 0xffu;
+    }
+    alignas(32) float bounds[2][3][kWideLanes];
+    for (int a = 0; a < 3; ++a) {
+        const __m256 v0 = _mm256_load_ps(block.vertex[0][a]);
+        const __m256 v1 = _mm256_load_ps(block.vertex[1][a]);
+        const __m256 v2 = _mm256_load_ps(block.vertex[2][a]);
+        const __m256 widen = _mm256_set1_ps(pad);
+        _mm256_store_ps(bounds[0][a],
+                        _mm256_sub_ps(_mm256_min_ps(_mm256_min_ps(v0, v1), v2), widen));
+        _mm256_store_ps(bounds[1][a],
+                        _mm256_add_ps(_mm256_max_ps(_mm256_max_ps(v0, v1), v2), widen));
+    }
+    __m256 tNear;
+    return frustumBoxes(&bounds[0][0][0], f, limitMax, tNear);
+}
+
+// The children lane l's own ray enters before limit[l] (bvh_traverse_avx2.cpp's hitChildren for
+// that one ray, with plain min and max of the two planes so that it holds for either sign).
+RAYLAB_AVX512 inline unsigned laneChildren(const BvhWideNode& node, const LaneScalars& s, int l,
+                                           float limit) {
+    __m256 tn = _mm256_set1_ps(s.tMin[l]), tf = _mm256_set1_ps(limit);
+    for (int a = 0; a < 3; ++a) {
+        const __m256 o = _mm256_set1_ps(s.origin[a][l]);
+        const __m256 inv = _mm256_set1_ps(s.inverse[a][l]);
+        const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.lower[a]), o), inv);
+        const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.upper[a]), o), inv);
+        tn = _mm256_max_ps(tn, _mm256_min_ps(t0, t1));
+        tf = _mm256_min_ps(tf, _mm256_max_ps(t0, t1));
+    }
+    return static_cast<unsigned>(_mm256_movemask_ps(
+        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
+}
+
+// Sets up both halves; false when their packets have different permutations.
+RAYLAB_AVX512 inline bool makePacket16(const RayPacket& low, const RayPacket& high, Packet16& p) {
+    makePacket(low, p.half[0]);
+    makePacket(high, p.half[1]);
+    const PacketRays& a = p.half[0];
+    const PacketRays& b = p.half[1];
+    if (a.lanes != 0 && b.lanes != 0 &&
+        (a.k[0] != b.k[0] || a.k[1] != b.k[1] || a.k[2] != b.k[2])) {
+        return false;
+    }
+    // A half without lanes takes the other's permutation: its registers are never read back.
+    PacketRays& empty = a.lanes == 0 ? p.half[0] : p.half[1];
+    const PacketRays& full = a.lanes == 0 ? b : a;
+    if (empty.lanes == 0) {
+        for (int i = 0; i < 3; ++i) {
+            empty.k[i] = full.k[i];
+            empty.vertexOffset[i] = full.vertexOffset[i];
+            empty.originK[i] = full.originK[i];
+        }
+        empty.shearX = full.shearX;
+        empty.shearY = full.shearY;
+        empty.shearZ = full.shearZ;
+    }
+    p.rays[0] = &low;
+    p.rays[1] = &high;
+    p.lanes = a.lanes | b.lanes << kPacketSize;
+    for (int axis = 0; axis < 3; ++axis) {
+        p.origin[axis] = join(a.origin[axis], b.origin[axis]);
+        p.inverse[axis] = join(a.inverse[axis], b.inverse[axis]);
+    }
+    p.tMin = join(a.tMin, b.tMin);
+    p.tMax = join(a.tMax, b.tMax);
+    for (int axis = 0; axis < 3; ++axis) {
+        _mm512_store_ps(p.scalars.origin[axis], p.origin[axis]);
+        _mm512_store_ps(p.scalars.inverse[axis], p.inverse[axis]);
+    }
+    _mm512_store_ps(p.scalars.tMin, p.tMin);
+    makeFrustum(p);
+    return true;
+}
+
+// Slab test of child c's box against the 16 lanes (hitChild on each half): the lanes whose
+// (tMin, limit] overlaps the box, and their entry distances.
+RAYLAB_AVX512 inline unsigned hitChild16(const BvhWideNode& node, int c, const Packet16& p,
+                                         __m512 limit, __m512& tNear) {
+    __m256 tn[2];
+    unsigned lanes = 0;
+    for (int h = 0; h < 2; ++h) {
+        lanes |= hitChild(node, c, p.half[h], half(limit, h), tn[h]) << (h * kPacketSize);
+    }
+    tNear = join(tn[0], tn[1]);
+    return lanes;
+}
+
+struct alignas(64) PacketEntry16 {
+    __m512 tNear; // per lane, at most the lane's entry distance
+    uint32_t ref;
+    unsigned lanes; // a superset of the lanes whose ray enters the box
+};
+
+// The children of a node that some lane of `active` may enter (the header comment says how),
+// sorted nearest last by the entry distance of their first lane when `ordered` (closest hit),
+// else in slot order (any hit), as hitChildren of bvh_packet_avx2.cpp. Returns how many.
+template <bool ordered>
+RAYLAB_AVX512 inline int hitChildren16(const BvhWideNode& node, const Packet16& p, __m512 limit,
+                                       const float* laneLimit, float limitMax, unsigned active,
+                                       PacketEntry16* out) {
+    int n = 0;
+    float key[kWideLanes];
+    __m256 frustumNear = _mm256_setzero_ps();
+    unsigned candidates = 0xffu, firstLane = 0;
+    alignas(32) float fn[kWideLanes];
+    if (p.frustum.valid) {
+        candidates = frustumBoxes(&node.lower[0][0], p.frustum, limitMax, frustumNear);
+        _mm256_store_ps(fn, frustumNear);
+        const int l = __builtin_ctz(active);
+        firstLane = candidates & laneChildren(node, p.scalars, l, laneLimit[l]);
+    }
+    for (unsigned m = candidates; m != 0; m &= m - 1) {
+        const int c = __builtin_ctz(m);
+        if (node.child[c] == kWideEmpty) {
+            continue;
+        }
+        __m512 tNear;
+        unsigned lanes;
+        if ((firstLane >> c) & 1u) {
+            tNear = _mm512_set1_ps(fn[c]);
+            lanes = active;
+        } else {
+            lanes = hitChild16(node, c, p, limit, tNear) & active;
+        }
+        if (lanes == 0) {
+            continue;
+        }
+        if constexpr (!ordered) {
+            out[n++] = PacketEntry16{tNear, node.child[c], lanes};
+            continue;
+        }
+        const float k =
+            _mm512_cvtss_f32(_mm512_permutexvar_ps(_mm512_set1_epi32(__builtin_ctz(lanes)), tNear));
+        int i = n++;
+        for (; i > 0 && key[i - 1] < k; --i) {
+            key[i] = key[i - 1];
+            out[i] = out[i - 1];
+        }
+        key[i] = k;
+        out[i] = PacketEntry16{tNear, node.child[c], lanes};
+    }
+    return n;
+}
+
+// Goes on with the last of a node's n > 0 hit children, written at stack[size, size + n), and
+// keeps the others pushed.
+RAYLAB_AVX512 inline void descend16(int n, const PacketEntry16* stack, int& size, uint32_t& ref,
+                                    unsigned& active) {
+    size += n - 1;
+    ref = stack[size].ref;
+    active = stack[size].lanes;
+}
+
+// The 8 lanes of half h of a 16-lane mask.
+inline unsigned halfLanes(unsigned lanes, int h) { return (lanes >> (h * kPacketSize)) & 0xffu; }
+
+// Tests the triangles of leaf `ref` that some lane may hit before limitMax (frustumTriangles)
+// against the lanes of `active`, 8 lanes at a time (a half without active lanes is skipped).
+// Closest hit: keeps each half's closest hits in best[half]. Any hit: adds the lanes that hit to
+// `found`, drops them from `active`, and stops when none is left.
+template <bool closest>
+RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16& p, float limitMax,
+                                   PacketBest* best, unsigned& active, unsigned& found) {
+    const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+    for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
+        for (unsigned m = frustumTriangles(*block, p.frustum, bvh.boxPad, limitMax);
+             m != 0 && active != 0; m &= m - 1) {
+            const int tri = __builtin_ctz(m);
+            if (repeatsFirst(*block, tri)) {
+                continue;
+            }
+            for (int h = 0; h < 2; ++h) {
+                const unsigned lanes = halfLanes(active, h);
+                if (lanes == 0) {
+                    continue;
+                }
+                if constexpr (closest) {
+                    keepTriangle(best[h], *block, tri, p.half[h], *p.rays[h], lanes);
+                } else {
+                    const unsigned hit = hitLanes(*block, tri, p.half[h], *p.rays[h], lanes)
+                                         << (h * kPacketSize);
+                    found |= hit;
+                    active &= ~hit;
+                }
+            }
+        }
+    }
+}
+
+RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, HitPacket* hits[2]) {
+    PacketBest best[2] = {noHitYet(), noHitYet()};
+    __m512 limit = p.tMax; // per lane: min(tMax, best.t)
+    float limitMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), limit);
+    alignas(64) float laneLimit[kPacket16Size];
+    _mm512_store_ps(laneLimit, limit);
+    const __m512 roundUp = _mm512_set1_ps(kBoxRoundUp);
+    PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
+    int size = 0;
+    uint32_t ref = 0;
+    unsigned active = p.lanes;
+    for (;;) {
+        if (!isLeaf(ref)) {
+            const int n = hitChildren16<true>(bvh.wideNodes[ref], p, limit, laneLimit, limitMax,
+                                              active, stack + size);
+            if (n > 0) {
+                descend16(n, stack, size, ref, active);
+                continue;
+            }
+        } else {
+            unsigned found = 0;
+            testLeaf<true>(bvh, ref, p, limitMax, best, active, found);
+            limit = _mm512_min_ps(p.tMax, join(best[0].t, best[1].t));
+            limitMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), limit);
+            _mm512_store_ps(laneLimit, limit);
+        }
+        // Next: the nearest pending entry that some lane may still find a closer hit in.
+        for (;;) {
+            if (size == 0) {
+                for (int h = 0; h < 2; ++h) {
+                    writeBest(best[h], halfLanes(p.lanes, h), *hits[h]);
+                }
+                return p.half[0].others | p.half[1].others << kPacketSize;
+            }
+            const PacketEntry16& e = stack[--size];
+            const unsigned open =
+                e.lanes & _mm512_cmp_ps_mask(e.tNear, _mm512_mul_ps(limit, roundUp), _CMP_LE_OQ);
+            if (open != 0) {
+                ref = e.ref;
+                active = open;
+                break;
+            }
+        }
+    }
+}
+
+RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
+    const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.tMax);
+    alignas(64) float laneTMax[kPacket16Size];
+    _mm512_store_ps(laneTMax, p.tMax);
+    unsigned found = 0;                      // lanes with a hit
+    PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
+    int size = 0;
+    uint32_t ref = 0;
+    unsigned active = p.lanes;
+    for (;;) {
+        if (!isLeaf(ref)) {
+            const int n = hitChildren16<false>(bvh.wideNodes[ref], p, p.tMax, laneTMax, tMaxMax,
+                                               active, stack + size);
+            if (n > 0) {
+                descend16(n, stack, size, ref, active);
+                continue;
+            }
+        } else {
+            testLeaf<false>(bvh, ref, p, tMaxMax, nullptr, active, found);
+            if (found == p.lanes) {
+                return found;
+            }
+        }
+        // Next: a pending entry with a lane still unanswered.
+        for (;;) {
+            if (size == 0) {
+                return found;
+            }
+            const PacketEntry16& e = stack[--size];
+            if ((e.lanes & ~found) != 0) {
+                ref = e.ref;
+                active = e.lanes & ~found;
+                break;
+            }
+        }
+    }
+}
+
+} // namespace
+
+RAYLAB_AVX512 unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low,
+                                          const RayPacket& high, HitPacket& lowHits,
+                                          HitPacket& highHits) {
+    Packet16 p;
+    if (!makePacket16(low, high, p)) {
+        return closestHitPacket(bvh, low, lowHits) | closestHitPacket(bvh, high, highHits)
+                                                         << kPacketSize;
+    }
+    const unsigned others = p.half[0].others | p.half[1].others << kPacketSize;
+    if (p.lanes == 0) {
+        lowHits.clear();
+        highHits.clear();
+        return others;
+    }
+    HitPacket* hits[2] = {&lowHits, &highHits};
+    return closestHit16Avx512(bvh, p, hits);
+}
+
+RAYLAB_AVX512 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
+                                      unsigned& occluded) {
+    Packet16 p;
+    if (!makePacket16(low, high, p)) {
+        unsigned lowOccluded = 0, highOccluded = 0;
+        const unsigned others = anyHitPacket(bvh, low, lowOccluded) |
+                                anyHitPacket(bvh, high, highOccluded) << kPacketSize;
+        occluded = lowOccluded | highOccluded << kPacketSize;
+        return others;
+    }
+    occluded = p.lanes != 0 ? anyHit16Avx512(bvh, p) : 0u;
+    return p.half[0].others | p.half[1].others << kPacketSize;
+}
+
+} // namespace raylab
+
+#else // not x86: bvhPacket16Supported() is false, so these are never called.
+
+namespace raylab {
+unsigned closestHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, HitPacket&,
+                            HitPacket&) {
+    return 0;
+}
+unsigned anyHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, unsigned& occluded) {
+    occluded = 0;
+    return 0;
+}
+} // namespace raylab
+
+#endif

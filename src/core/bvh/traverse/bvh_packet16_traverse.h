@@ -1,0 +1,34 @@
+#pragma once
+// The 16-lane packet traversal (internal to core): two RayPackets, lanes 0-7 and 8-15, traced as
+// one packet of 16 rays with AVX-512 where the CPU has it, and the entry points that let tests
+// choose the path. Callers of closestHitPacket16 / anyHitPacket16 check bvhPacket16Supported()
+// and that bvh.wideNodes is not empty.
+
+#include "bvh/bvh.h"
+#include "ray_packet.h"
+
+namespace raylab {
+
+// Lanes of a 16-ray packet: bit i < 8 is lane i of the first RayPacket, bit 8 + i lane i of the
+// second.
+inline constexpr int kPacket16Size = 2 * kPacketSize;
+
+// How closestHit16 / anyHit16 trace: one AVX-512 packet of 16 rays, or the two RayPackets one
+// after the other through closestHit8 / anyHit8 (the path of CPUs without AVX-512).
+enum class Packet16Path { Avx512, TwoPackets8 };
+
+void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
+                  HitPacket& highHits, Packet16Path path);
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path);
+
+// Traces low and high as one packet when the packets of their lanes (makePacket: the valid rays
+// sharing a half's most common ray permutation) have the same permutation, else each as its own
+// 8-lane packet (closestHitPacket, anyHitPacket). Every lane of lowHits and highHits is written;
+// `occluded` gets the traced lanes that hit something (16 bits). Returns the lanes left for the
+// single-ray path (16 bits).
+unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
+                            HitPacket& lowHits, HitPacket& highHits);
+unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
+                        unsigned& occluded);
+
+} // namespace raylab

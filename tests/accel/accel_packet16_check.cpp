@@ -1,0 +1,70 @@
+#include "accel_packet16_check.h"
+
+#include "accel_check.h"
+#include "core/bvh/bvh_packet.h"
+
+#include <algorithm>
+#include <gtest/gtest.h>
+
+namespace raylab::accel_test {
+
+std::vector<Packet16Path> packet16Paths() {
+    if (bvhPacket16Supported()) {
+        return {Packet16Path::Avx512, Packet16Path::TwoPackets8};
+    }
+    return {Packet16Path::TwoPackets8};
+}
+
+int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Packet16Path path,
+                   const Scene* scene, int& failures) {
+    RayPacket packets[2];
+    for (int i = 0; i < count; ++i) {
+        packets[i / kPacketSize].set(i % kPacketSize, rays[i]);
+    }
+    packets[0].lanes &= mask & 0xffu;
+    packets[1].lanes &= mask >> kPacketSize;
+    HitPacket hits[2];
+    hits[0].set(0, Hit{1.0f, 0.5f, 0.5f, 3}); // stale contents must be overwritten
+    closestHit16(bvh, packets[0], packets[1], hits[0], hits[1], path);
+    const unsigned occluded = anyHit16(bvh, packets[0], packets[1], path);
+    int hitCount = 0;
+    for (int i = 0; i < kPacket16Size; ++i) {
+        const Hit hit = hits[i / kPacketSize].hit(i % kPacketSize);
+        const bool any = ((occluded >> i) & 1u) != 0;
+        if (i >= count || ((mask >> i) & 1u) == 0) {
+            if (hit.found() || any) {
+                ++failures;
+                ADD_FAILURE() << "lane " << i << " without a ray answered";
+            }
+            continue;
+        }
+        const Ray& ray = rays[i];
+        const Hit single = closestHit(bvh, ray);
+        bool ok = sameHit(hit, single) && sameHit(hit, closestHitScalar(bvh, ray)) &&
+                  any == anyHit(bvh, ray) && any == anyHitScalar(bvh, ray);
+        if (scene != nullptr) {
+            ok = ok && sameHit(hit, closestHitBruteForce(*scene, ray)) &&
+                 any == anyHitBruteForce(*scene, ray);
+        }
+        if (!ok && failures++ < 5) {
+            ADD_FAILURE() << "lane " << i << ": packet t=" << hit.t << " tri=" << hit.triangle
+                          << " any=" << any << ", single t=" << single.t
+                          << " tri=" << single.triangle << " any=" << anyHit(bvh, ray);
+        }
+        hitCount += single.found() ? 1 : 0;
+    }
+    return hitCount;
+}
+
+int expectPackets16(const Bvh& bvh, const std::vector<Ray>& rays, Packet16Path path,
+                    const Scene* scene, int size) {
+    int hits = 0, failures = 0;
+    for (std::size_t first = 0; first < rays.size() && failures < 5; first += size) {
+        const int count = static_cast<int>(
+            std::min<std::size_t>(static_cast<std::size_t>(size), rays.size() - first));
+        hits += expectPacket16(bvh, &rays[first], count, 0xffffu, path, scene, failures);
+    }
+    return hits;
+}
+
+} // namespace raylab::accel_test

@@ -1,0 +1,101 @@
+// Packets of 16 rays (closestHit16, anyHit16) against single rays, the scalar reference and
+// brute force: every lane's answer bit for bit, on both paths: the AVX-512 packet (skipped on
+// CPUs without it) and the two 8-ray packets of CPUs without it. What only 16-ray packets have:
+// halves of different ray permutations, 16-bit lane masks, partial packets of 9 to 16 rays.
+// (test_bvh_packet.cpp traces its ray sets in 16-ray packets on every path too.)
+
+#include "accel_packet16_check.h"
+#include "accel_packet_rays.h"
+#include "accel_scenes.h"
+#include "core/bvh/bvh_packet.h"
+#include "core/bvh/traverse/bvh_packet16_traverse.h"
+#include "core/cornell_box.h"
+
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace raylab::accel_test {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+class BvhPacket16 : public ::testing::TestWithParam<Packet16Path> {
+protected:
+    void SetUp() override {
+        if (GetParam() == Packet16Path::Avx512 && !bvhPacket16Supported()) {
+            GTEST_SKIP() << "this CPU has no AVX-512F: the 16-ray AVX-512 packets are not tested "
+                            "here (the two-packet path is)";
+        }
+    }
+    int expectPackets(const Bvh& bvh, const std::vector<Ray>& rays, const Scene* scene = nullptr,
+                      int size = kPacket16Size) const {
+        return expectPackets16(bvh, rays, GetParam(), scene, size);
+    }
+};
+
+TEST_P(BvhPacket16, RandomSoupRandomRaysMatchBruteForce) {
+    const Scene soup = makeTriangleSoup(5000, 0.05f, 11);
+    const Bvh bvh = buildBvh(soup);
+    EXPECT_GT(expectPackets(bvh, makeRandomRays(4000, 12), &soup), 0);
+}
+
+TEST_P(BvhPacket16, MixedPermutationsWithinAndAcrossHalves) {
+    const Scene soup = makeTriangleSoup(5000, 0.1f, 16);
+    const Bvh bvh = buildBvh(soup);
+    // Every lane its own direction; and halves that each share one, different per half.
+    const std::vector<Ray> mixed = mixedDirectionRays(3000, /*perLane=*/true, 17);
+    const std::vector<Ray> halves = mixedDirectionRays(3000, /*perLane=*/false, 18);
+    EXPECT_GT(expectPackets(bvh, mixed, &soup), 0);
+    EXPECT_GT(expectPackets(bvh, halves, &soup), 0);
+}
+
+TEST_P(BvhPacket16, PartiallyFilledPackets) {
+    const Bvh bvh = buildBvh(makeCornellBox());
+    const std::vector<Ray> rays = cameraRays(Camera{}, 35, 21);
+    for (int size = 1; size <= kPacket16Size; ++size) {
+        expectPackets(bvh, rays, nullptr, size);
+    }
+}
+
+// Lane masks with gaps, including a whole half off: the lanes in the mask answer as single
+// rays, the others get Hit{} and no occlusion, whatever they hold.
+TEST_P(BvhPacket16, LaneMasksWithGaps) {
+    const Bvh bvh = buildBvh(makeCornellBox());
+    const std::vector<Ray> rays = cameraRays(Camera{}, 64, 32);
+    std::mt19937 rng(23);
+    int failures = 0;
+    for (int k = 0; k < 600; ++k) {
+        constexpr unsigned kMasks[] = {0u, 0xffu, 0xff00u, 0x8001u, 0x0100u, 0x0080u, 0xffffu};
+        const unsigned mask = k < 7 ? kMasks[k] : rng() & 0xffffu;
+        const std::size_t first = (static_cast<std::size_t>(k) * 37) % (rays.size() - 16);
+        expectPacket16(bvh, &rays[first], kPacket16Size, mask, GetParam(), nullptr, failures);
+    }
+    EXPECT_EQ(failures, 0);
+}
+
+TEST_P(BvhPacket16, DegenerateAndNonFiniteTriangles) {
+    Scene scene = makeTriangleSoup(1000, 0.2f, 3);
+    scene.triangles[10].v0.x = kNaN;
+    scene.triangles[20].v1.y = kInfinity;
+    scene.triangles[40].v1 = scene.triangles[40].v0;                                   // zero area
+    scene.triangles[50].v2 = 0.5f * (scene.triangles[50].v0 + scene.triangles[50].v1); // collinear
+    const Bvh bvh = buildBvh(scene);
+    Camera camera;
+    camera.position = {0.0f, 0.0f, -2.5f};
+    expectPackets(bvh, cameraRays(camera, 64, 48), &scene);
+    expectPackets(bvh, makeRandomRays(2000, 4), &scene);
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, BvhPacket16,
+                         ::testing::Values(Packet16Path::Avx512, Packet16Path::TwoPackets8),
+                         [](const ::testing::TestParamInfo<Packet16Path>& path) {
+                             return path.param == Packet16Path::Avx512 ? std::string("Avx512")
+                                                                       : std::string("TwoPackets8");
+                         });
+
+} // namespace
+} // namespace raylab::accel_test
