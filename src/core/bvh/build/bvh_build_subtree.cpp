@@ -9,6 +9,8 @@ namespace {
 constexpr int kMaxLeafSize = 64;       // cap on BvhBuildOptions::maxLeafSize
 constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the median (depth bound)
 constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
+constexpr int kFewestBins = 4;         // object bins per axis of the smallest nodes ...
+constexpr int kReferencesPerBin = 20;  // ... and one more per this many references
 
 // Runs job(i) for i in [0, count): on the team when there is one.
 template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, const Job& job) {
@@ -52,21 +54,24 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     auto chunkEnd = [&](std::size_t i) { return chunks == 1 ? first + count : chunkBegin(i + 1); };
 
     // The best object split, from the bins of every chunk merged in chunk order.
-    const ObjectSplit frame = objectBinFrame(centroids, bins_);
-    scratch.reset(bins_);
+    // Fewer bins for fewer references, as Embree's builder does: a small node's sweep and the
+    // emptying of its bins cost more than binning its references.
+    const int bins = std::min(bins_, kFewestBins + static_cast<int>(count / kReferencesPerBin));
+    const ObjectSplit frame = objectBinFrame(centroids, bins);
+    scratch.reset(bins);
     chunkBins.resize(chunks > 1 ? chunks : 0);
     if (chunks > 1) {
         forEachChunk(chunks, team, [&](std::size_t i) {
-            chunkBins[i].reset(bins_);
-            binRecords(chunkBegin(i), chunkEnd(i), frame.lower, frame.scale, bins_, chunkBins[i]);
+            chunkBins[i].reset(bins);
+            binRecords(chunkBegin(i), chunkEnd(i), frame.lower, frame.scale, bins, chunkBins[i]);
         });
         for (const BinSet& b : chunkBins) {
-            scratch.merge(b, bins_);
+            scratch.merge(b, bins);
         }
     } else {
-        binRecords(first, first + count, frame.lower, frame.scale, bins_, scratch);
+        binRecords(first, first + count, frame.lower, frame.scale, bins, scratch);
     }
-    choice.object = bestObjectSplit(scratch, bins_, count, frame);
+    choice.object = bestObjectSplit(scratch, count, frame);
 
     // The best spatial split, where the object split's children overlap much.
     float bestCost = choice.object.cost;
@@ -148,7 +153,7 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         if (kind == SplitKind::Object) {
             // Into the spare room, which the children then own as their references; the
             // parent's room becomes their spare.
-            partitionRecords(task.first, task.first + task.count, choice.object, bins_, task.spare,
+            partitionRecords(task.first, task.first + task.count, choice.object, task.spare,
                              task.spare + choice.object.leftCount, left.bounds, right.bounds);
             left.first = task.spare;
             left.spare = task.first;
