@@ -120,6 +120,24 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
     return best;
 }
 
+float binOverreach(const BinSet& bins, const ObjectSplit& frame, const Aabb& bounds) {
+    float most = 0.0f;
+    for (int a = 0; a < 3; ++a) {
+        if (!(frame.scale[a] > 0.0f)) {
+            continue;
+        }
+        float sum = 0.0f;
+        for (int b = 0; b < frame.bins; ++b) {
+            if (bins.count[a][b] != 0) {
+                const Aabb box = bins.box[a][b].toAabb();
+                sum += box.upper[a] - box.lower[a];
+            }
+        }
+        most = std::max(most, sum / (bounds.upper[a] - bounds.lower[a]) - 1.0f);
+    }
+    return most;
+}
+
 uint32_t leftCountOf(const BinSet& bins, const ObjectSplit& split) {
     uint32_t n = 0;
     for (int s = 0; s < split.bin; ++s) {

@@ -27,6 +27,12 @@ ObjectSplit objectBinFrame(const Aabb& centroids, int bins);
 // on each side; axis < 0 when there is none.
 ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSplit& frame);
 
+// How far a node's references reach beyond their bins (binned in `frame`, the node's box
+// `bounds`): the largest over the binned axes of the summed extents of the non-empty bins'
+// boxes along the axis over the node's extent, less 1. About 0 for references much smaller
+// than a bin, 1 or more where references cross bins.
+float binOverreach(const BinSet& bins, const ObjectSplit& frame, const Aabb& bounds);
+
 // References of [first, last) whose centroids the split puts on the left.
 uint32_t leftCountOf(const BinSet& bins, const ObjectSplit& split);
 

@@ -11,6 +11,10 @@ constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the m
 constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
 constexpr int kFewestBins = 4;         // object bins per axis of the smallest nodes ...
 constexpr int kReferencesPerBin = 20;  // ... and one more per this many references
+// Spatial splits are tried only where the references reach beyond their object bins by this
+// much (binOverreach): where they are small against the node, its overlap comes from the
+// shape of the surface, which cutting triangles does not remove (the dragon's large nodes).
+constexpr float kMinSpatialOverreach = 1.0f;
 
 // Runs job(i) for i in [0, count): on the team when there is one.
 template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, const Job& job) {
@@ -76,7 +80,8 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     // The best spatial split, where the object split's children overlap much.
     float bestCost = choice.object.cost;
     if (splitBudget > 0 && context_.scene && choice.object.overlapArea > context_.minOverlapArea &&
-        choice.object.overlapArea > context_.minNodeOverlap * bounds.area()) {
+        choice.object.overlapArea > context_.minNodeOverlap * bounds.area() &&
+        binOverreach(scratch, frame, bounds) >= kMinSpatialOverreach) {
         std::vector<SpatialBins> parts(chunks);
         forEachChunk(chunks, team, [&](std::size_t i) {
             binSpatial(*context_.scene, chunkBegin(i), chunkEnd(i), bounds, context_.slack,
