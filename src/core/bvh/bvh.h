@@ -78,7 +78,7 @@ struct Bvh {
 
 struct BvhBuildOptions {
     int maxLeafSize = 4; // triangles per leaf, at most
-    int binCount = 16;   // SAH bins per axis of large nodes (small ones use fewer)
+    int binCount = 16;   // SAH bins per axis
     int threads = 0;     // 0 = every hardware thread; the result does not depend on it
     bool simd = true;    // also build the 8-wide form when the CPU has AVX2
     // Keep the binary nodes beside the 8-wide form (tests of the binary tree itself). Without

@@ -9,8 +9,6 @@ namespace {
 constexpr int kMaxLeafSize = 64;       // cap on BvhBuildOptions::maxLeafSize
 constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the median (depth bound)
 constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
-constexpr int kFewestBins = 4;         // object bins per axis of the smallest nodes ...
-constexpr int kReferencesPerBin = 20;  // ... and one more per this many references
 // Spatial splits are tried only where the references reach beyond their object bins by this
 // much (binOverreach): where they are small against the node, its overlap comes from the
 // shape of the surface, which cutting triangles does not remove (the dragon's large nodes).
@@ -58,9 +56,9 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     auto chunkEnd = [&](std::size_t i) { return chunks == 1 ? first + count : chunkBegin(i + 1); };
 
     // The best object split, from the bins of every chunk merged in chunk order.
-    // Fewer bins for fewer references, as Embree's builder does: a small node's sweep and the
-    // emptying of its bins cost more than binning its references.
-    const int bins = std::min(bins_, kFewestBins + static_cast<int>(count / kReferencesPerBin));
+    // As many bins for small nodes as for large ones: fewer (4 plus one per 20 references, as
+    // Embree's builder bins) build the dragon 7-12% faster but make the box's packets 25% slower.
+    const int bins = bins_;
     const ObjectSplit frame = objectBinFrame(centroids, bins);
     scratch.reset(bins);
     chunkBins.resize(chunks > 1 ? chunks : 0);
