@@ -4,6 +4,7 @@
 
 #include "accel_check.h"
 #include "accel_scenes.h"
+#include "core/bvh/build/bvh_build_object_split.h"
 #include "core/bvh/bvh_packet.h"
 
 #include <cstring>
@@ -79,6 +80,36 @@ TEST(BvhSpatialSplit, WithPresplittingToo) {
     both.spatialSplitBudget = 1.0f;
     const Bvh bvh = buildBvh(scene, both);
     EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(6000, 47)), 1000);
+}
+
+// binOverreach, the test for trying spatial splits at all: about 0 where references are small
+// against their bins (a finely tessellated surface), 1 or more where they cross bins.
+float overreachOf(const RecordVector& records) {
+    const RecordBounds bounds = boundsOf(records.data(), records.data() + records.size());
+    const ObjectSplit frame = objectBinFrame(bounds.centres.toAabb(), 16);
+    BinSet bins;
+    bins.reset(frame.bins);
+    binRecords(records.data(), records.data() + records.size(), frame.lower, frame.scale,
+               frame.bins, bins);
+    return binOverreach(bins, frame, bounds.box.toAabb());
+}
+
+TEST(BvhSpatialSplit, TriedOnlyWhereReferencesReachBeyondTheirBins) {
+    RecordVector records;
+    auto add = [&](float lower, float upper) {
+        records.push_back({{lower, 0.0f, 0.0f},
+                           static_cast<uint32_t>(records.size()),
+                           {upper, 0.001f, 0.001f},
+                           0.0f});
+    };
+    for (int i = 0; i < 64; ++i) {
+        add(static_cast<float>(i) / 64.0f, static_cast<float>(i) / 64.0f + 0.001f);
+    }
+    EXPECT_LT(overreachOf(records), 0.1f);
+    add(0.0f, 0.5f); // three references across half the node, in different bins
+    add(0.25f, 0.75f);
+    add(0.5f, 1.0f);
+    EXPECT_GE(overreachOf(records), 1.0f);
 }
 
 TEST(BvhSpatialSplit, SameTreeForAnyThreadCount) {

@@ -6,26 +6,37 @@ namespace raylab {
 
 namespace {
 
-// Aabb::area() of a non-empty box: 2 (ex ey + ey ez + ez ex), rounded in that order.
-float areaOf(const SseBox& b) {
-    const __m128 e = _mm_sub_ps(b.upper, b.lower);
-    const __m128 p = _mm_mul_ps(e, _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1)));
-    const float xy = _mm_cvtss_f32(p);
-    const float yz = _mm_cvtss_f32(_mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
-    const float zx = _mm_cvtss_f32(_mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 2, 2, 2)));
-    return 2.0f * (xy + yz + zx);
+// Lanes of b where mask is set, of a elsewhere (SSE2 has no blend).
+__m128 select(__m128 mask, __m128 a, __m128 b) {
+    return _mm_or_ps(_mm_andnot_ps(mask, a), _mm_and_ps(mask, b));
 }
 
-// Bit s set for each bin s < binCount with a non-zero count.
-uint32_t nonEmptyBins(const uint32_t* count, int binCount) {
-    uint32_t mask = 0;
-    const __m128i zero = _mm_setzero_si128();
-    for (int s = 0; s < binCount; s += 4) { // kMaxBins is a multiple of 4
-        const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(count + s));
-        const int empty = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(c, zero)));
-        mask |= static_cast<uint32_t>(~empty & 15) << s;
+// The boxes of the three axes' sides at one plane: box a is axis a's.
+struct AxisBoxes {
+    __m128 lower[3] = {_mm_set1_ps(kInfinity), _mm_set1_ps(kInfinity), _mm_set1_ps(kInfinity)};
+    __m128 upper[3] = {_mm_set1_ps(-kInfinity), _mm_set1_ps(-kInfinity), _mm_set1_ps(-kInfinity)};
+    void extend(const BinSet& bins, int bin) {
+        for (int a = 0; a < 3; ++a) {
+            lower[a] = _mm_min_ps(lower[a], bins.box[a][bin].lower);
+            upper[a] = _mm_max_ps(upper[a], bins.box[a][bin].upper);
+        }
     }
-    return binCount >= 32 ? mask : mask & ((1u << binCount) - 1);
+    // Lane a: Aabb::area() of box a, 2 (ex ey + ey ez + ez ex) rounded in that order (infinite
+    // or NaN for an empty box).
+    __m128 areas() const {
+        __m128 x = _mm_sub_ps(upper[0], lower[0]), y = _mm_sub_ps(upper[1], lower[1]);
+        __m128 z = _mm_sub_ps(upper[2], lower[2]), w = _mm_setzero_ps();
+        _MM_TRANSPOSE4_PS(x, y, z, w); // now x holds the x extents of the three boxes, ...
+        const __m128 sum =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, y), _mm_mul_ps(y, z)), _mm_mul_ps(z, x));
+        return _mm_mul_ps(_mm_set1_ps(2.0f), sum);
+    }
+};
+
+__m128i countsOf(const BinSet& bins, int bin) {
+    return _mm_setr_epi32(static_cast<int>(bins.count[0][bin]),
+                          static_cast<int>(bins.count[1][bin]),
+                          static_cast<int>(bins.count[2][bin]), 0);
 }
 
 } // namespace
@@ -34,6 +45,7 @@ ObjectSplit objectBinFrame(const Aabb& centroids, int bins) {
     ObjectSplit frame;
     const glm::vec3 extent = centroids.upper - centroids.lower;
     frame.lower = centroids.lower;
+    frame.bins = bins;
     for (int a = 0; a < 3; ++a) {
         // Slightly below bins/extent so the largest centroid lands in the last bin.
         frame.scale[a] = extent[a] > 0.0f ? static_cast<float>(bins) * 0.99999f / extent[a] : 0.0f;
@@ -41,51 +53,89 @@ ObjectSplit objectBinFrame(const Aabb& centroids, int bins) {
     return frame;
 }
 
-ObjectSplit bestObjectSplit(const BinSet& bins, int binCount, uint32_t count,
-                            const ObjectSplit& frame) {
+ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSplit& frame) {
+    const int binCount = frame.bins;
+    // The three axes are swept at once, one SSE lane each. Plane k lies between bins k - 1 and
+    // k. A plane next to an empty bin splits the references as its neighbour does, at the same
+    // cost; the earliest plane of the cheapest cost is kept, on the lowest such axis.
+    float rightCost[kMaxBins][4];
+    __m128 rightLower[kMaxBins][3], rightUpper[kMaxBins][3];
+    AxisBoxes side;
+    __m128i n = _mm_setzero_si128();
+    for (int k = binCount - 1; k > 0; --k) {
+        side.extend(bins, k);
+        n = _mm_add_epi32(n, countsOf(bins, k));
+        _mm_storeu_ps(rightCost[k], _mm_mul_ps(side.areas(), _mm_cvtepi32_ps(n)));
+        for (int a = 0; a < 3; ++a) {
+            rightLower[k][a] = side.lower[a];
+            rightUpper[k][a] = side.upper[a];
+        }
+    }
+    const __m128i all = _mm_set1_epi32(static_cast<int>(count));
+    const __m128 splittable = _mm_cmpgt_ps(
+        _mm_setr_ps(frame.scale.x, frame.scale.y, frame.scale.z, 0.0f), _mm_setzero_ps());
+    __m128 bestCost = _mm_set1_ps(kInfinity);
+    __m128i bestPlane = _mm_setzero_si128();
+    side = AxisBoxes{};
+    n = _mm_setzero_si128();
+    for (int k = 1; k < binCount; ++k) {
+        side.extend(bins, k - 1);
+        n = _mm_add_epi32(n, countsOf(bins, k - 1));
+        const __m128 cost =
+            _mm_add_ps(_mm_mul_ps(side.areas(), _mm_cvtepi32_ps(n)), _mm_loadu_ps(rightCost[k]));
+        // Both sides non-empty (counts are below 2^31), the axis not flat, and cheaper.
+        const __m128i twoSides =
+            _mm_and_si128(_mm_cmpgt_epi32(n, _mm_setzero_si128()), _mm_cmplt_epi32(n, all));
+        const __m128 better = _mm_and_ps(_mm_and_ps(_mm_castsi128_ps(twoSides), splittable),
+                                         _mm_cmplt_ps(cost, bestCost));
+        bestCost = select(better, bestCost, cost);
+        bestPlane = _mm_castps_si128(
+            select(better, _mm_castsi128_ps(bestPlane), _mm_castsi128_ps(_mm_set1_epi32(k))));
+    }
+    alignas(16) float costs[4];
+    alignas(16) int32_t planes[4];
+    _mm_store_ps(costs, bestCost);
+    _mm_store_si128(reinterpret_cast<__m128i*>(planes), bestPlane);
     ObjectSplit best = frame;
-    // Sweep each axis over its non-empty bins only: a plane between two empty bins splits the
-    // references as the plane right after the last non-empty bin on its left, at the same
-    // cost, and that earliest plane is the one kept.
+    for (int a = 0; a < 3; ++a) {
+        if (costs[a] < best.cost) {
+            best.cost = costs[a];
+            best.axis = a;
+        }
+    }
+    if (best.axis < 0) {
+        return best;
+    }
+    const int a = best.axis, k = planes[a];
+    best.bin = k;
+    SseBox left;
+    for (int b = 0; b < k; ++b) {
+        left.extend(bins.box[a][b].lower, bins.box[a][b].upper);
+        best.leftCount += bins.count[a][b];
+    }
+    SseBox overlap;
+    overlap.lower = _mm_max_ps(left.lower, rightLower[k][a]);
+    overlap.upper = _mm_min_ps(left.upper, rightUpper[k][a]);
+    best.overlapArea = overlap.toAabb().area();
+    return best;
+}
+
+float binOverreach(const BinSet& bins, const ObjectSplit& frame, const Aabb& bounds) {
+    float most = 0.0f;
     for (int a = 0; a < 3; ++a) {
         if (!(frame.scale[a] > 0.0f)) {
             continue;
         }
-        int used[kMaxBins]; // uninitialised on purpose: only [0, m) is read
-        int m = 0;
-        for (uint32_t mask = nonEmptyBins(bins.count[a], binCount); mask != 0; mask &= mask - 1) {
-            used[m++] = __builtin_ctz(mask);
-        }
-        float rightCost[kMaxBins];
-        __m128 rightLower[kMaxBins], rightUpper[kMaxBins];
-        SseBox box;
-        uint32_t n = 0;
-        for (int k = m - 1; k > 0; --k) {
-            box.extend(bins.box[a][used[k]].lower, bins.box[a][used[k]].upper);
-            n += bins.count[a][used[k]];
-            rightCost[k] = areaOf(box) * static_cast<float>(n);
-            rightLower[k] = box.lower;
-            rightUpper[k] = box.upper;
-        }
-        box = SseBox{};
-        n = 0;
-        for (int k = 1; k < m; ++k) {
-            box.extend(bins.box[a][used[k - 1]].lower, bins.box[a][used[k - 1]].upper);
-            n += bins.count[a][used[k - 1]];
-            const float cost = areaOf(box) * static_cast<float>(n) + rightCost[k];
-            if (n < count && cost < best.cost) {
-                best.cost = cost;
-                best.axis = a;
-                best.bin = used[k - 1] + 1;
-                best.leftCount = n;
-                SseBox overlap;
-                overlap.lower = _mm_max_ps(box.lower, rightLower[k]);
-                overlap.upper = _mm_min_ps(box.upper, rightUpper[k]);
-                best.overlapArea = overlap.toAabb().area();
+        float sum = 0.0f;
+        for (int b = 0; b < frame.bins; ++b) {
+            if (bins.count[a][b] != 0) {
+                const Aabb box = bins.box[a][b].toAabb();
+                sum += box.upper[a] - box.lower[a];
             }
         }
+        most = std::max(most, sum / (bounds.upper[a] - bounds.lower[a]) - 1.0f);
     }
-    return best;
+    return most;
 }
 
 uint32_t leftCountOf(const BinSet& bins, const ObjectSplit& split) {
@@ -97,7 +147,7 @@ uint32_t leftCountOf(const BinSet& bins, const ObjectSplit& split) {
 }
 
 void partitionRecords(const PrimRecord* first, const PrimRecord* last, const ObjectSplit& split,
-                      int binCount, PrimRecord* left, PrimRecord* right, RecordBounds& leftBounds,
+                      PrimRecord* left, PrimRecord* right, RecordBounds& leftBounds,
                       RecordBounds& rightBounds) {
     const int a = split.axis;
     const float lower = split.lower[a], scale = split.scale[a];
@@ -105,7 +155,7 @@ void partitionRecords(const PrimRecord* first, const PrimRecord* last, const Obj
     // pointer says, and only that pointer moves on.
     for (const PrimRecord* r = first; r != last; ++r) {
         const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
-        const bool isLeft = binOf(r->lower[a] + r->upper[a], lower, scale, binCount) < split.bin;
+        const bool isLeft = binOf(r->lower[a] + r->upper[a], lower, scale, split.bins) < split.bin;
         PrimRecord* to = isLeft ? left : right;
         _mm_storeu_ps(&to->lower.x, lo);
         _mm_storeu_ps(&to->upper.x, hi);

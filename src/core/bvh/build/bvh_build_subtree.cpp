@@ -9,6 +9,10 @@ namespace {
 constexpr int kMaxLeafSize = 64;       // cap on BvhBuildOptions::maxLeafSize
 constexpr int kSahDepthLimit = 40;     // deeper than this, nodes split at the median (depth bound)
 constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one triangle test
+// Spatial splits are tried only where the references reach beyond their object bins by this
+// much (binOverreach): where they are small against the node, its overlap comes from the
+// shape of the surface, which cutting triangles does not remove (the dragon's large nodes).
+constexpr float kMinSpatialOverreach = 1.0f;
 
 // Runs job(i) for i in [0, count): on the team when there is one.
 template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, const Job& job) {
@@ -52,26 +56,30 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     auto chunkEnd = [&](std::size_t i) { return chunks == 1 ? first + count : chunkBegin(i + 1); };
 
     // The best object split, from the bins of every chunk merged in chunk order.
-    const ObjectSplit frame = objectBinFrame(centroids, bins_);
-    scratch.reset(bins_);
+    // As many bins for small nodes as for large ones: fewer (4 plus one per 20 references, as
+    // Embree's builder bins) build the dragon 7-12% faster but make the box's packets 25% slower.
+    const int bins = bins_;
+    const ObjectSplit frame = objectBinFrame(centroids, bins);
+    scratch.reset(bins);
     chunkBins.resize(chunks > 1 ? chunks : 0);
     if (chunks > 1) {
         forEachChunk(chunks, team, [&](std::size_t i) {
-            chunkBins[i].reset(bins_);
-            binRecords(chunkBegin(i), chunkEnd(i), frame.lower, frame.scale, bins_, chunkBins[i]);
+            chunkBins[i].reset(bins);
+            binRecords(chunkBegin(i), chunkEnd(i), frame.lower, frame.scale, bins, chunkBins[i]);
         });
         for (const BinSet& b : chunkBins) {
-            scratch.merge(b, bins_);
+            scratch.merge(b, bins);
         }
     } else {
-        binRecords(first, first + count, frame.lower, frame.scale, bins_, scratch);
+        binRecords(first, first + count, frame.lower, frame.scale, bins, scratch);
     }
-    choice.object = bestObjectSplit(scratch, bins_, count, frame);
+    choice.object = bestObjectSplit(scratch, count, frame);
 
     // The best spatial split, where the object split's children overlap much.
     float bestCost = choice.object.cost;
     if (splitBudget > 0 && context_.scene && choice.object.overlapArea > context_.minOverlapArea &&
-        choice.object.overlapArea > context_.minNodeOverlap * bounds.area()) {
+        choice.object.overlapArea > context_.minNodeOverlap * bounds.area() &&
+        binOverreach(scratch, frame, bounds) >= kMinSpatialOverreach) {
         std::vector<SpatialBins> parts(chunks);
         forEachChunk(chunks, team, [&](std::size_t i) {
             binSpatial(*context_.scene, chunkBegin(i), chunkEnd(i), bounds, context_.slack,
@@ -148,7 +156,7 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         if (kind == SplitKind::Object) {
             // Into the spare room, which the children then own as their references; the
             // parent's room becomes their spare.
-            partitionRecords(task.first, task.first + task.count, choice.object, bins_, task.spare,
+            partitionRecords(task.first, task.first + task.count, choice.object, task.spare,
                              task.spare + choice.object.leftCount, left.bounds, right.bounds);
             left.first = task.spare;
             left.spare = task.first;

@@ -97,8 +97,8 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
                 partitionRecords(chunkBegin(task.first, count, i), chunkEnd(task.first, count, i),
-                                 choice.object, bins_, task.spare + leftAt[i],
-                                 task.spare + rightAt[i], leftBounds[i], rightBounds[i]);
+                                 choice.object, task.spare + leftAt[i], task.spare + rightAt[i],
+                                 leftBounds[i], rightBounds[i]);
             });
             for (std::size_t i = 0; i < chunks; ++i) {
                 left.bounds.merge(leftBounds[i]);
