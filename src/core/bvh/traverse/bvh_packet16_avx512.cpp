@@ -49,9 +49,11 @@ RAYLAB_AVX512 inline __m512 join(__m256 lo, __m256 hi) {
         _mm512_insertf64x4(_mm512_castps_pd(_mm512_castps256_ps512(lo)), _mm256_castps_pd(hi), 1));
 }
 
-// Lanes 0-7 (h = 0) or 8-15 (h = 1) of x.
+// Lanes 0-7 (h = 0) or 8-15 (h = 1) of x. The extraction's lane index must be an immediate
+// even where the optimiser does not fold h (sanitizer builds), hence the two constants.
 RAYLAB_AVX512 inline __m256 half(__m512 x, int h) {
-    return _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(x), h));
+    const __m512d d = _mm512_castps_pd(x);
+    return _mm256_castpd_ps(h == 0 ? _mm512_extractf64x4_pd(d, 0) : _mm512_extractf64x4_pd(d, 1));
 }
 
 // Bounds of the 16 rays' box test, for all 8 children of a node at once: per axis, the interval
