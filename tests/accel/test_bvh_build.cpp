@@ -52,7 +52,6 @@ void expectSameBytes(const Bvh& a, const Bvh& b) {
     }
     EXPECT_TRUE(sameBytes(a.triangleBlocks, b.triangleBlocks));
     EXPECT_TRUE(sameBytes(a.triangles, b.triangles));
-    EXPECT_TRUE(sameBytes(a.shading, b.shading));
     EXPECT_EQ(a.leafReferences, b.leafReferences);
     EXPECT_EQ(a.skippedTriangles, b.skippedTriangles);
 }

@@ -36,15 +36,6 @@ struct BvhTriangle {
     uint32_t sceneIndex;
 };
 
-// What the SIMD shading needs of a scene triangle besides its material's colour: its geometric
-// normal, exactly geometricNormal(triangle) ((0, 0, 0) for a degenerate or non-finite one), and
-// its material index (Triangle::material). 16 bytes, so one 128-bit load reads a record.
-struct alignas(16) BvhShadingRecord {
-    glm::vec3 normal;
-    uint32_t material;
-};
-static_assert(sizeof(BvhShadingRecord) == 16);
-
 struct Bvh {
     // nodes[0] is the root; empty for a scene with no valid triangle, and, once the 8-wide form
     // is built from them, unless BvhBuildOptions::keepBinaryNodes asks to keep them.
@@ -64,11 +55,6 @@ struct Bvh {
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.
     std::vector<BvhWideNode> wideNodes;           // wideNodes[0] is the root
     std::vector<BvhTriangleBlock> triangleBlocks; // leaf order
-    // Built with the SIMD form (even if the tree does not fit the 8-wide nodes): one record per
-    // scene triangle, in scene order, skipped triangles included; the AVX2 shading reads it
-    // instead of the triangles (lab_shading_packet.cpp), and computes the normals itself when it
-    // is empty.
-    std::vector<BvhShadingRecord> shading;
 
     // Leaf triangle i of a binary leaf (BvhNode::index <= i < index + count).
     BvhTriangle leafTriangle(uint32_t i) const;

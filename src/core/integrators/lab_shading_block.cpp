@@ -34,7 +34,7 @@ void shadeRowPair(const Scene& scene, const Bvh& bvh, const RenderSettings& sett
     RayPacket shadowRays[2] = {RayPacket(RayPacket::Unset{}), RayPacket(RayPacket::Unset{})};
     for (int k = 0; k < 2; ++k) {
         counts.primary += static_cast<std::uint64_t>(laneCount(rays[k].lanes));
-        beginShade(scene, bvh, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
+        beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
     }
     const unsigned occluded = (shadowRays[0].lanes | shadowRays[1].lanes) != 0
                                   ? anyHit16(bvh, shadowRays[0], shadowRays[1])
@@ -70,7 +70,7 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     for (int k = 0; k < count; ++k) {
         counts.primary += static_cast<std::uint64_t>(laneCount(rays[k].lanes));
-        beginShade(scene, bvh, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
+        beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
     }
     // Shadow rays run from their hit point towards the light and stop short of it (tMin =
     // epsilon >= 0, tMax = |r| - epsilon): segments ending at the light.

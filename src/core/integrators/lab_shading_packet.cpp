@@ -3,9 +3,7 @@
 // CPU has AVX2, the 8 lanes run those stages' operations side by side (shadeLanesAvx2), each
 // rounded as the scalar stage rounds it (IEEE single precision, no contraction: core builds with
 // -ffp-contract=off), so the radiance is bit for bit the scalar path's (tests/core checks it).
-// The normals are read from the Bvh's shading records (bvh.h: geometricNormal's own results)
-// where it has them. Rays, hits and shadow rays stay in structure-of-arrays form (ray_packet.h)
-// throughout.
+// Rays, hits and shadow rays stay in structure-of-arrays form (ray_packet.h) throughout.
 
 #include "bvh/bvh_packet.h"
 #include "integrators/lab_shading.h"
@@ -114,24 +112,9 @@ RAYLAB_AVX2 inline void loadColumns(const float* const rows[8], int offset, __m2
     out[3] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2));
 }
 
-// The geometric normal and the material index of scene triangle index[lane], for the 8 lanes:
-// read from the Bvh's shading records.
-RAYLAB_AVX2 inline void loadNormals(const BvhShadingRecord* records, const uint32_t index[8],
-                                    __m256 normal[3], __m256i& material) {
-    const float* rows[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i) {
-        rows[i] = &records[index[i]].normal.x;
-    }
-    __m256 columns[4];
-    loadColumns(rows, 0, columns);
-    for (int k = 0; k < 3; ++k) {
-        normal[k] = columns[k];
-    }
-    material = _mm256_castps_si256(columns[3]);
-}
-
-// The same computed from the scene's triangles, as geometricNormal: normalize(cross(e1, e2)),
-// (0, 0, 0) when the length is 0 or not finite.
+// The geometric normal and the material index of scene triangle index[lane], for the 8 lanes,
+// computed as geometricNormal: normalize(cross(e1, e2)), (0, 0, 0) when the length is 0 or not
+// finite.
 RAYLAB_AVX2 inline void computeNormals(const Triangle* triangles, const uint32_t index[8],
                                        __m256 normal[3], __m256i& material) {
     const float* rows[kPacketSize];
@@ -178,15 +161,11 @@ RAYLAB_AVX2 inline void gatherDiffuse(const std::vector<Material>& materials, __
 }
 
 // surfaceAt, lightAt and labRadiance for 8 lanes up to the shadow test; lanes that missed (or
-// hold no ray) give black. With kRecords, the normals and material indices are read from
-// bvh.shading (not empty); without, they are computed from the scene's triangles. A template, so
-// that the records' path keeps none of the computation's registers (GCC spills the normals when
-// one function holds both).
-template <bool kRecords>
-RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                                 const RayPacket& rays, const HitPacket& hits,
-                                 ShadingBeforeShadow& stage, RayPacket& shadowRays,
-                                 RayCounts& counts) {
+// hold no ray) give black.
+RAYLAB_AVX2 void beginShadeAvx2(const Scene& scene, const RenderSettings& settings,
+                                const RayPacket& rays, const HitPacket& hits,
+                                ShadingBeforeShadow& stage, RayPacket& shadowRays,
+                                RayCounts& counts) {
     // closestHit8 leaves kNoTriangle in the lanes without a ray or a hit.
     const __m256i triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(hits.triangle));
     const __m256i missed = _mm256_cmpeq_epi32(triangle, _mm256_set1_epi32(-1));
@@ -210,11 +189,7 @@ RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh& bvh, const Rende
             missed));
     __m256 n[3];
     __m256i material;
-    if constexpr (kRecords) {
-        loadNormals(bvh.shading.data(), index, n, material);
-    } else {
-        computeNormals(scene.triangles.data(), index, n, material);
-    }
+    computeNormals(scene.triangles.data(), index, n, material);
     __m256 rho[3];
     gatherDiffuse(scene.materials, material, rho);
     const __m256 dir[3] = {load3(rays.direction, 0), load3(rays.direction, 1),
@@ -269,18 +244,6 @@ RAYLAB_AVX2 void beginShadeLanes(const Scene& scene, const Bvh& bvh, const Rende
     }
 }
 
-// beginShadeLanes with Bvh::shading when the Bvh has it.
-RAYLAB_AVX2 inline void beginShadeAvx2(const Scene& scene, const Bvh& bvh,
-                                       const RenderSettings& settings, const RayPacket& rays,
-                                       const HitPacket& hits, ShadingBeforeShadow& stage,
-                                       RayPacket& shadowRays, RayCounts& counts) {
-    if (!bvh.shading.empty()) {
-        beginShadeLanes<true>(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
-    } else {
-        beginShadeLanes<false>(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
-    }
-}
-
 RAYLAB_AVX2 void finishShadeAvx2(const ShadingBeforeShadow& stage, unsigned occluded,
                                  RadiancePacket& radiance) {
     const __m256 shadowed = laneMask(occluded);
@@ -299,10 +262,10 @@ int laneCount(unsigned lanes) {
 }
 
 // AVX2 code: callers check bvhSimdSupported() (lab_shading_stages.h).
-RAYLAB_AVX2 void beginShade(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+RAYLAB_AVX2 void beginShade(const Scene& scene, const RenderSettings& settings,
                             const RayPacket& rays, const HitPacket& hits,
                             ShadingBeforeShadow& stage, RayPacket& shadowRays, RayCounts& counts) {
-    beginShadeAvx2(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
+    beginShadeAvx2(scene, settings, rays, hits, stage, shadowRays, counts);
 }
 
 void finishShade(const ShadingBeforeShadow& stage, unsigned occluded, RadiancePacket& radiance) {
@@ -323,7 +286,7 @@ RAYLAB_AVX2 void shadeLanesAvx2(const Scene& scene, const Bvh& bvh, const Render
     }
     ShadingBeforeShadow stage;
     RayPacket shadowRays{RayPacket::Unset{}}; // beginShadeAvx2 stores the lanes it sets
-    beginShadeAvx2(scene, bvh, settings, rays, hits, stage, shadowRays, counts);
+    beginShadeAvx2(scene, settings, rays, hits, stage, shadowRays, counts);
     finishShadeAvx2(stage, shadowRays.lanes != 0 ? anyHit8(bvh, shadowRays) : 0u, radiance);
 }
 

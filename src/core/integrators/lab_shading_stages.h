@@ -19,12 +19,12 @@ struct alignas(32) ShadingBeforeShadow {
     float dark[3][kPacketSize];
 };
 
-// Shades the hits of rays (found in bvh, built for scene) up to the shadow test and sets
+// Shades the hits of rays (scene triangle indices in hits) up to the shadow test and sets
 // shadowRays (every lane that needs one, in the lane of its camera ray; shadowRays.lanes = those
-// lanes), counting them in counts.shadow. Reads the normals from bvh.shading when it has them.
-void beginShade(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                const RayPacket& rays, const HitPacket& hits, ShadingBeforeShadow& stage,
-                RayPacket& shadowRays, RayCounts& counts);
+// lanes), counting them in counts.shadow.
+void beginShade(const Scene& scene, const RenderSettings& settings, const RayPacket& rays,
+                const HitPacket& hits, ShadingBeforeShadow& stage, RayPacket& shadowRays,
+                RayCounts& counts);
 
 // The radiance once the shadow rays' answers are known (bit i: lane i's shadow ray is blocked).
 void finishShade(const ShadingBeforeShadow& stage, unsigned occluded, RadiancePacket& radiance);

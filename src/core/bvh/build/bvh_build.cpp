@@ -191,20 +191,6 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
     bvh.leafReferences = layout.records;
 }
 
-// Bvh::shading: every scene triangle's normal and material index, chunks on the team.
-std::vector<BvhShadingRecord> shadingRecords(const Scene& scene, BuildTeam& team) {
-    const std::size_t triangles = scene.triangles.size();
-    std::vector<BvhShadingRecord> records(triangles);
-    team.forEach((triangles + kBoundsChunk - 1) / kBoundsChunk, [&](std::size_t c) {
-        for (std::size_t i = c * kBoundsChunk; i < std::min(triangles, (c + 1) * kBoundsChunk);
-             ++i) {
-            const Triangle& t = scene.triangles[i];
-            records[i] = BvhShadingRecord{geometricNormal(t), t.material};
-        }
-    });
-    return records;
-}
-
 } // namespace
 
 Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
@@ -278,9 +264,6 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
             bvh.triangles[i] = BvhTriangle{t.v0, t.v1, t.v2, sceneIndices[i]};
         }
     }
-    if (wide) {
-        bvh.shading = shadingRecords(scene, team);
-    }
     if (!bvh.wideNodes.empty() && !options.keepBinaryNodes) {
         std::vector<BvhNode>().swap(bvh.nodes); // the 8-wide form holds the tree and triangles
     }
@@ -290,8 +273,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
 std::size_t Bvh::memoryBytes() const {
     return nodes.capacity() * sizeof(BvhNode) + triangles.capacity() * sizeof(BvhTriangle) +
            wideNodes.capacity() * sizeof(BvhWideNode) +
-           triangleBlocks.capacity() * sizeof(BvhTriangleBlock) +
-           shading.capacity() * sizeof(BvhShadingRecord);
+           triangleBlocks.capacity() * sizeof(BvhTriangleBlock);
 }
 
 BvhTriangle Bvh::leafTriangle(uint32_t i) const {

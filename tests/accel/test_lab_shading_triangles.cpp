@@ -1,7 +1,6 @@
-// Bvh::shading (core/bvh.h): each scene triangle's geometricNormal and material index, built
-// with the SIMD form; and the AVX2 shading that reads it (core/lab_shading_packet.cpp) against the
-// scalar stages (surfaceAt, lightAt, labRadiance) for triangles of every kind, for lanes without
-// hits, and for materials edited after the build.
+// The AVX2 shading (core/lab_shading_packet.cpp), which computes each hit triangle's normal as
+// geometricNormal does, against the scalar stages (surfaceAt, lightAt, labRadiance) for triangles
+// of every kind, for lanes without hits, and for materials edited after the build.
 
 #include "accel_scenes.h"
 #include "core/camera.h"
@@ -71,30 +70,6 @@ Scene makeTrianglesOfEveryKind() {
     return scene;
 }
 
-TEST(BvhShading, RecordsAreTheScalarNormalsAndMaterials) {
-    const Scene scene = makeTrianglesOfEveryKind();
-    const Bvh bvh = buildBvh(scene);
-    if (!bvhSimdSupported()) {
-        EXPECT_TRUE(bvh.shading.empty());
-        GTEST_SKIP() << "this CPU has no AVX2: no SIMD form, no shading records";
-    }
-    ASSERT_EQ(bvh.shading.size(), scene.triangles.size());
-    int degenerate = 0;
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-        const glm::vec3 expected = geometricNormal(scene.triangles[i]);
-        ASSERT_TRUE(sameBits(bvh.shading[i].normal, expected)) << "triangle " << i;
-        ASSERT_EQ(bvh.shading[i].material, scene.triangles[i].material) << "triangle " << i;
-        degenerate += expected == glm::vec3(0.0f) ? 1 : 0;
-    }
-    EXPECT_EQ(degenerate, 9); // the NaN one first, and the odd ones without a normal
-    EXPECT_GE(bvh.memoryBytes(), bvh.shading.size() * sizeof(BvhShadingRecord));
-
-    BvhBuildOptions scalarOnly;
-    scalarOnly.simd = false;
-    EXPECT_TRUE(buildBvh(scene, scalarOnly).shading.empty());
-    EXPECT_TRUE(Bvh{}.shading.empty());
-}
-
 // Lane i of `stage` and `shadowRays` against the scalar stages for `ray` and `hit`.
 void expectLaneEqualsScalar(const Scene& scene, const RenderSettings& settings, const Ray& ray,
                             const Hit& hit, const ShadingBeforeShadow& stage,
@@ -119,13 +94,10 @@ void expectLaneEqualsScalar(const Scene& scene, const RenderSettings& settings, 
 }
 
 // Hits made up for every scene triangle, whether the BVH could find it or not, in packets whose
-// lanes without a hit (kNoTriangle) change from packet to packet: beginShade with the Bvh's
-// records, and without them (the normals computed), equal the scalar stages lane by lane, and
-// the lanes without a hit are +0 and cast no shadow ray (a record read at kNoTriangle would
-// fault).
-void expectShadingOfEveryTriangle(const Scene& scene, const Bvh& bvh, RenderSettings settings) {
-    Bvh bvhWithoutRecords = bvh; // the normals computed from the scene's triangles
-    bvhWithoutRecords.shading.clear();
+// lanes without a hit (kNoTriangle) change from packet to packet: beginShade equals the scalar
+// stages lane by lane, and the lanes without a hit are +0 and cast no shadow ray (a triangle read
+// at kNoTriangle would fault).
+void expectShadingOfEveryTriangle(const Scene& scene, const RenderSettings& settings) {
     std::size_t next = 0;
     int lit = 0;
     for (unsigned pattern = 0; next < scene.triangles.size(); ++pattern) {
@@ -151,47 +123,42 @@ void expectShadingOfEveryTriangle(const Scene& scene, const Bvh& bvh, RenderSett
                 ++next;
             }
         }
-        for (const bool withRecords : {true, false}) {
-            ShadingBeforeShadow stage;
-            std::memset(&stage, 0xff, sizeof(stage)); // NaN: every lane must be written
-            RayPacket shadowRays;
-            RayCounts counts;
-            beginShade(scene, withRecords ? bvh : bvhWithoutRecords, settings, rays, hits, stage,
-                       shadowRays, counts);
-            EXPECT_EQ(counts.shadow, static_cast<std::uint64_t>(laneCount(shadowRays.lanes)));
-            for (int i = 0; i < kPacketSize; ++i) {
-                if ((hitLanes >> i) & 1u) {
-                    expectLaneEqualsScalar(scene, settings, laneRays[i], laneHits[i], stage,
-                                           shadowRays, i);
-                    if (::testing::Test::HasFatalFailure()) {
-                        return;
-                    }
-                    lit += stage.lit[1][i] > stage.dark[1][i] ? 1 : 0;
-                } else {
-                    for (int c = 0; c < 3; ++c) {
-                        ASSERT_EQ(std::memcmp(&stage.lit[c][i], &kZero, sizeof(float)), 0);
-                        ASSERT_EQ(std::memcmp(&stage.dark[c][i], &kZero, sizeof(float)), 0);
-                    }
-                    ASSERT_EQ((shadowRays.lanes >> i) & 1u, 0u);
+        ShadingBeforeShadow stage;
+        std::memset(&stage, 0xff, sizeof(stage)); // NaN: every lane must be written
+        RayPacket shadowRays;
+        RayCounts counts;
+        beginShade(scene, settings, rays, hits, stage, shadowRays, counts);
+        EXPECT_EQ(counts.shadow, static_cast<std::uint64_t>(laneCount(shadowRays.lanes)));
+        for (int i = 0; i < kPacketSize; ++i) {
+            if ((hitLanes >> i) & 1u) {
+                expectLaneEqualsScalar(scene, settings, laneRays[i], laneHits[i], stage, shadowRays,
+                                       i);
+                if (::testing::Test::HasFatalFailure()) {
+                    return;
                 }
+                lit += stage.lit[1][i] > stage.dark[1][i] ? 1 : 0;
+            } else {
+                for (int c = 0; c < 3; ++c) {
+                    ASSERT_EQ(std::memcmp(&stage.lit[c][i], &kZero, sizeof(float)), 0);
+                    ASSERT_EQ(std::memcmp(&stage.dark[c][i], &kZero, sizeof(float)), 0);
+                }
+                ASSERT_EQ((shadowRays.lanes >> i) & 1u, 0u);
             }
         }
     }
     EXPECT_GT(lit, 1000);
 }
 
-TEST(BvhShading, PacketsEqualTheScalarStagesForTrianglesOfEveryKind) {
+TEST(LabShadingTriangles, PacketsEqualTheScalarStagesForTrianglesOfEveryKind) {
     if (!bvhSimdSupported()) {
         GTEST_SKIP() << "this CPU has no AVX2: beginShade is not run";
     }
     const Scene scene = makeTrianglesOfEveryKind();
-    const Bvh bvh = buildBvh(scene);
-    ASSERT_FALSE(bvh.shading.empty());
     RenderSettings settings;
     settings.light.position = {0.2f, 0.3f, -2.0f};
-    expectShadingOfEveryTriangle(scene, bvh, settings);
+    expectShadingOfEveryTriangle(scene, settings);
     settings.shadows = false;
-    expectShadingOfEveryTriangle(scene, bvh, settings);
+    expectShadingOfEveryTriangle(scene, settings);
 }
 
 // shadeLab8 and shadeLabBlock against shadeLab, pixel for pixel; returns the lanes' radiance.
@@ -232,22 +199,22 @@ std::vector<glm::vec3> expectPacketsEqualScalar(const Scene& scene, const Bvh& b
 }
 
 // Materials are read at shading time, not kept in the Bvh: colours edited after buildBvh shade
-// with the new colours, with the Bvh's records and without them.
-TEST(BvhShading, MaterialsEditedAfterTheBuildShadeWithTheirNewColours) {
+// with the new colours, with the SIMD form and without it.
+TEST(LabShadingTriangles, MaterialsEditedAfterTheBuildShadeWithTheirNewColours) {
     Scene scene = makeCornellBox();
     ASSERT_GE(scene.materials.size(), 2u);
     BvhBuildOptions scalarOnly;
     scalarOnly.simd = false;
-    const Bvh withRecords = buildBvh(scene), withoutRecords = buildBvh(scene, scalarOnly);
+    const Bvh simd = buildBvh(scene), scalar = buildBvh(scene, scalarOnly);
     RenderSettings settings;
     settings.width = 48;
     settings.height = 40;
-    const std::vector<glm::vec3> before = expectPacketsEqualScalar(scene, withRecords, settings);
+    const std::vector<glm::vec3> before = expectPacketsEqualScalar(scene, simd, settings);
     for (Material& m : scene.materials) {
         m.diffuse = glm::vec3(m.diffuse.z, 0.5f * m.diffuse.x, 1.0f - m.diffuse.y);
     }
-    const std::vector<glm::vec3> after = expectPacketsEqualScalar(scene, withRecords, settings);
-    EXPECT_EQ(expectPacketsEqualScalar(scene, withoutRecords, settings), after);
+    const std::vector<glm::vec3> after = expectPacketsEqualScalar(scene, simd, settings);
+    EXPECT_EQ(expectPacketsEqualScalar(scene, scalar, settings), after);
     int changed = 0;
     for (std::size_t i = 0; i < after.size(); ++i) {
         changed += after[i] != before[i] ? 1 : 0;
