@@ -2,8 +2,7 @@
 // one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles are
 // traced one by one through the BVH, and a large scene's block as packets of 16 rays where the
 // CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles, else its rows two by two;
-// without AVX-512, row by row. Either way each lane's
-// radiance is shadeLab8's.
+// without AVX-512, row by row. Either way each lane's radiance is shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
