@@ -7,7 +7,7 @@
 
 namespace raylab::bench {
 
-BlockedRays blockRays(const BenchRays& rays) {
+BlockedRays blockRays(const BenchRays& rays, BlockLayout layout) {
     BlockedRays blocked;
     const std::vector<uint32_t> shadowOf = rayOfPrimary(rays.shadowPrimary, rays.primary.size());
     const int ts = rays.tileSize;
@@ -23,6 +23,8 @@ BlockedRays blockRays(const BenchRays& rays) {
             const int rows = std::min(kPacketSize, ty1 - y0);
             for (int x0 = tx0; x0 < tx1; x0 += kPacketSize) {
                 const int count = std::min(kPacketSize, tx1 - x0);
+                const bool tiles =
+                    layout == BlockLayout::Tiles4x4 && rows == kPacketSize && count == kPacketSize;
                 bool anyShadow = false;
                 for (int r = 0; r < kPacketSize; ++r) {
                     RayPacket primary;
@@ -31,11 +33,12 @@ BlockedRays blockRays(const BenchRays& rays) {
                         uint32_t p = kNoRay;
                         uint32_t s = kNoRay;
                         if (r < rows && i < count) {
+                            const BlockPixel pixel = tiles ? tilePixel(r, i) : BlockPixel{i, r};
                             // Row-major inside the tile (bench_rays.h).
                             const std::size_t index =
                                 rays.primaryOffset[tile] +
-                                static_cast<std::size_t>(y0 + r - ty0) * tileWidth +
-                                static_cast<std::size_t>(x0 + i - tx0);
+                                static_cast<std::size_t>(y0 + pixel.y - ty0) * tileWidth +
+                                static_cast<std::size_t>(x0 + pixel.x - tx0);
                             p = static_cast<uint32_t>(index);
                             primary.set(i, rays.primary[index]);
                             s = shadowOf[index];
@@ -92,8 +95,8 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                                                 (shadowCandidates ? kShadowCandidates : 0));
 }
 
-void traceBlockInRowPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                          BlockAnswers& answers) {
+void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
+                             BlockAnswers& answers) {
     const int count = blocked.rows[block];
     const std::size_t first = block * kPacketSize;
     const RayPacket* rays = &blocked.primary[first];

@@ -11,6 +11,7 @@
 #include "core/bvh/bvh.h"
 #include "core/bvh/bvh_frustum.h"
 #include "core/camera.h"
+#include "core/integrators/lab_shading.h"
 #include "core/ray_packet.h"
 
 #include <cstddef>
@@ -36,9 +37,16 @@ struct BlockedRays {
     std::size_t blocks() const { return rows.size(); }
 };
 
+// How a block's pixels are laid out in its 8 packets: `Rows`, packet r is row r (lane i: column
+// i); `Tiles4x4`, as the renderer traces a full block of a scene it does not trace in blocks
+// (core/lab_shading_block.cpp): packets 2t and 2t + 1 are the upper and lower halves (4 x 2
+// pixels) of the block's 4 x 4 tile t (tilePixel). Blocks at the image's right or bottom edge,
+// with fewer rows or columns, keep their rows either way.
+enum class BlockLayout { Rows, Tiles4x4 };
+
 // Tile i's pixels in blocks of 8 x 8 from its top-left corner, row of blocks by row of blocks,
 // as the lab integrator's fast pass (core/integrators/lab_pass.cpp) walks a tile.
-BlockedRays blockRays(const BenchRays& rays);
+BlockedRays blockRays(const BenchRays& rays, BlockLayout layout = BlockLayout::Rows);
 
 // What tracing a block recorded: bit kCameraCandidates of flags[b] when its camera packets went
 // through frustum candidates, kShadowCandidates likewise for its shadow packets.
@@ -61,10 +69,11 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                 std::size_t block, const glm::vec3& light, bool shadowFrustum,
                 BlockAnswers& answers);
 
-// Traces block b as shadeLabBlock does for a scene it does not trace in blocks: its rows two by
-// two as packets of 16 rays (closestHit16 for the camera rays, anyHit16 for the shadow rays), a
-// last odd row as a packet of 8. Sets no flags.
-void traceBlockInRowPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                          BlockAnswers& answers);
+// Traces block b as shadeLabBlock does for a scene it does not trace in blocks: its packets two
+// by two as packets of 16 rays (closestHit16 for the camera rays, anyHit16 for the shadow rays),
+// a last odd one as a packet of 8. With BlockLayout::Tiles4x4, a full block is four 4 x 4 tiles,
+// as the renderer's. Sets no flags.
+void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
+                             BlockAnswers& answers);
 
 } // namespace raylab::bench

@@ -38,8 +38,9 @@ std::size_t countMismatches(const BlockedRays& blocked, const BlockAnswers& answ
 
 bool checkPacketsAndBlocks(const BenchRays& rays, const PacketedRays& packeted,
                            const RaylabAnswers& answers, const BlockedRays* blocked,
-                           const BlockAnswers* blockAnswers, const BlockAnswers* rowPairAnswers,
-                           BenchReport& report, std::string& error) {
+                           const BlockAnswers* blockAnswers, const BlockedRays* paired,
+                           const BlockAnswers* pairAnswers, BenchReport& report,
+                           std::string& error) {
     // The packets' answer for each ray: ray k of a tile is lane k % 8 of the tile's packet
     // k / 8 (bench_rays.h).
     std::vector<Hit> packetHit(rays.primary.size());
@@ -68,9 +69,9 @@ bool checkPacketsAndBlocks(const BenchRays& rays, const PacketedRays& packeted,
         report.blockMismatches = countMismatches(*blocked, *blockAnswers, packetHit, packetAnswer,
                                                  cameraSeen, shadowSeen);
     }
-    if (rowPairAnswers != nullptr) {
-        report.packet16Mismatches = countMismatches(*blocked, *rowPairAnswers, packetHit,
-                                                    packetAnswer, cameraSeen, shadowSeen);
+    if (pairAnswers != nullptr) {
+        report.packet16Mismatches =
+            countMismatches(*paired, *pairAnswers, packetHit, packetAnswer, cameraSeen, shadowSeen);
     }
     if (cameraSeen != rays.primary.size() || shadowSeen != rays.shadow.size()) {
         error = "the blocks hold " + std::to_string(cameraSeen) + " camera and " +

@@ -23,13 +23,14 @@ struct RaylabAnswers {
 
 // Counts into report.packetMismatches the packets' answers that differ from the single rays',
 // and, when `blocked` is not null, into report.blockMismatches the blocks' answers (when
-// blockAnswers is not null) and into report.packet16Mismatches the 16-ray packets' answers (when
-// rowPairAnswers is not null, traceBlockInRowPairs) that differ from the packets', with the
-// blocks' statistics (report.cameraBlocks, ...). False, with `error` set, when the blocks do not
-// hold every ray of the workload.
+// blockAnswers is not null) and into report.packet16Mismatches the 16-ray packets' answers for
+// the blocks of `paired` (when pairAnswers is not null, traceBlockInPacketPairs) that differ
+// from the packets', with the blocks' statistics (report.cameraBlocks, ...). False, with `error`
+// set, when the blocks do not hold every ray of the workload.
 bool checkPacketsAndBlocks(const BenchRays& rays, const PacketedRays& packeted,
                            const RaylabAnswers& answers, const BlockedRays* blocked,
-                           const BlockAnswers* blockAnswers, const BlockAnswers* rowPairAnswers,
-                           BenchReport& report, std::string& error);
+                           const BlockAnswers* blockAnswers, const BlockedRays* paired,
+                           const BlockAnswers* pairAnswers, BenchReport& report,
+                           std::string& error);
 
 } // namespace raylab::bench

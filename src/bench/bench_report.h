@@ -61,8 +61,9 @@ struct BenchReport {
     std::size_t blockMismatches = 0; // answers where blocks and packets differ (must be 0)
     std::size_t cameraBlocks = 0, cameraBlocksThroughCandidates = 0;
     std::size_t shadowBlocks = 0, shadowBlocksThroughCandidates = 0; // blocks with shadow rays
-    // The same blocks' rows two by two as packets of 16 rays (traceBlockInRowPairs: AVX-512
-    // where the CPU has it), timed in the same turns.
+    // The same blocks as packets of 16 rays, full blocks as four 4 x 4 tiles and the others
+    // two rows at a time (traceBlockInPacketPairs: AVX-512 where the CPU has it), timed in the
+    // same turns.
     bool packets16 = false;
     TracerFigures raylabPackets16;
     std::size_t packet16Mismatches = 0; // answers where they and packets differ (must be 0)

@@ -223,15 +223,16 @@ int run(int argc, char** argv) {
     // timing.
     const bool blocks = packets && !flags.noBlocks;
     report.blocks = blocks;
-    // The same blocks' rows two by two as packets of 16 rays (bench_blocks.h), as the renderer
-    // traces a scene it does not trace in blocks.
+    const BlockedRays blocked = blocks ? blockRays(rays) : BlockedRays{};
+    // The same blocks as packets of 16 rays (bench_blocks.h), full blocks in 4 x 4 tiles, as the
+    // renderer traces a scene it does not trace in blocks.
     const bool packets16 = blocks;
     report.packets16 = packets16;
-    const BlockedRays blocked = blocks ? blockRays(rays) : BlockedRays{};
-    BlockAnswers rowPairAnswers = makeBlockAnswers(blocked);
-    const TileTracer rowPairTile = [&](std::size_t tile) {
-        for (std::size_t b = blocked.blockOffset[tile]; b < blocked.blockOffset[tile + 1]; ++b) {
-            traceBlockInRowPairs(bvh, blocked, b, rowPairAnswers);
+    const BlockedRays tiled = packets16 ? blockRays(rays, BlockLayout::Tiles4x4) : BlockedRays{};
+    BlockAnswers pairAnswers = makeBlockAnswers(tiled);
+    const TileTracer pairTile = [&](std::size_t tile) {
+        for (std::size_t b = tiled.blockOffset[tile]; b < tiled.blockOffset[tile + 1]; ++b) {
+            traceBlockInPacketPairs(bvh, tiled, b, pairAnswers);
         }
         traceBounces(tile);
     };
@@ -262,7 +263,7 @@ int run(int argc, char** argv) {
         turns.push_back({&blockTile, {}, &report.raylabBlocks});
     }
     if (packets16) {
-        turns.push_back({&rowPairTile, {}, &report.raylabPackets16});
+        turns.push_back({&pairTile, {}, &report.raylabPackets16});
     }
     turns.push_back({&singleTile, {}, &report.raylabSingle});
     report.bounceRaylab.rays = rays.bounce.size();
@@ -334,10 +335,11 @@ int run(int argc, char** argv) {
         }
     }
 #endif
-    if (packets && !checkPacketsAndBlocks(
-                       rays, packeted, RaylabAnswers{hits, occluded, packetHits, packetOccluded},
-                       blocks ? &blocked : nullptr, blocks ? &blockAnswers : nullptr,
-                       packets16 ? &rowPairAnswers : nullptr, report, error)) {
+    if (packets &&
+        !checkPacketsAndBlocks(
+            rays, packeted, RaylabAnswers{hits, occluded, packetHits, packetOccluded},
+            blocks ? &blocked : nullptr, blocks ? &blockAnswers : nullptr,
+            packets16 ? &tiled : nullptr, packets16 ? &pairAnswers : nullptr, report, error)) {
         std::cerr << "raylab-bench: " << error << "\n";
         return 1;
     }

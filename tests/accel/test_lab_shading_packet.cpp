@@ -155,5 +155,87 @@ TEST(LabShadingPacket, BlocksEqualPackets) {
     expectBlockShadingEqualsPackets(makeTriangleSoup(5000, 0.1f, 31), settings);
 }
 
+// tilePixel lays a block's 8 packets out as four 4 x 4 tiles: every pixel of the 8 x 8 block
+// once, each packet a 4 x 2 rectangle (lanes 0-3 one row, 4-7 the next), packets 2t and 2t + 1
+// the upper and lower halves of one 4 x 4 square.
+TEST(LabShadingPacket, TilePixelsCoverTheBlockInFourByFourTiles) {
+    int seen[kPacketSize][kPacketSize] = {};
+    for (int p = 0; p < kPacketSize; ++p) {
+        const BlockPixel corner = tilePixel(p, 0);
+        const BlockPixel tileCorner = tilePixel(p & ~1, 0);
+        EXPECT_EQ(corner.x % 4, 0) << p;
+        EXPECT_EQ(corner.y % 2, 0) << p;
+        EXPECT_EQ(corner.x, tileCorner.x) << p;
+        EXPECT_EQ(corner.y, tileCorner.y + (p % 2) * 2) << p;
+        EXPECT_EQ(tileCorner.y % 4, 0) << p;
+        for (int i = 0; i < kPacketSize; ++i) {
+            const BlockPixel pixel = tilePixel(p, i);
+            ASSERT_GE(pixel.x, 0);
+            ASSERT_LT(pixel.x, kPacketSize);
+            ASSERT_GE(pixel.y, 0);
+            ASSERT_LT(pixel.y, kPacketSize);
+            EXPECT_EQ(pixel.x, corner.x + i % 4) << p << " " << i;
+            EXPECT_EQ(pixel.y, corner.y + i / 4) << p << " " << i;
+            ++seen[pixel.y][pixel.x];
+        }
+    }
+    for (int y = 0; y < kPacketSize; ++y) {
+        for (int x = 0; x < kPacketSize; ++x) {
+            EXPECT_EQ(seen[y][x], 1) << x << ", " << y;
+        }
+    }
+}
+
+// Full blocks of a scene traced packet by packet (shadeLabBlock regroups them as 4 x 4 tiles of
+// 16 rays where the CPU has AVX-512) against shadeLab8 row by row: the same radiance bit for bit
+// in each row's lanes, and the same counts.
+void expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& settings) {
+    const Bvh bvh = buildBvh(scene);
+    ASSERT_FALSE(tracesInBlocks(bvh));
+    const PrimaryRays primary(settings.camera, settings.width, settings.height);
+    int lit = 0, shadowed = 0;
+    for (int y0 = 0; y0 + kPacketSize <= settings.height; y0 += kPacketSize) {
+        for (int x0 = 0; x0 + kPacketSize <= settings.width; x0 += kPacketSize) {
+            RayPacket packets[kPacketSize];
+            for (int r = 0; r < kPacketSize; ++r) {
+                for (int i = 0; i < kPacketSize; ++i) {
+                    packets[r].set(i, primary.through(static_cast<float>(x0 + i) + 0.5f,
+                                                      static_cast<float>(y0 + r) + 0.5f));
+                }
+            }
+            RadiancePacket block[kPacketSize], rows[kPacketSize];
+            RayCounts blockCounts, rowCounts;
+            shadeLabBlock(scene, bvh, settings, packets, kPacketSize, block, blockCounts);
+            for (int r = 0; r < kPacketSize; ++r) {
+                shadeLab8(scene, bvh, settings, packets[r], rows[r], rowCounts);
+                ASSERT_EQ(std::memcmp(&block[r], &rows[r], sizeof(RadiancePacket)), 0)
+                    << "block " << x0 << ", " << y0 << " row " << r;
+                for (int i = 0; i < kPacketSize; ++i) {
+                    lit += block[r].value[0][i] > 0.0f ? 1 : 0;
+                }
+            }
+            ASSERT_EQ(blockCounts.primary, rowCounts.primary);
+            ASSERT_EQ(blockCounts.shadow, rowCounts.shadow);
+            shadowed += static_cast<int>(blockCounts.shadow);
+        }
+    }
+    EXPECT_GT(lit, settings.width * settings.height / 8);
+    if (settings.shadows) {
+        EXPECT_GT(shadowed, settings.width * settings.height / 16);
+    }
+}
+
+TEST(LabShadingPacket, FullBlocksInTilesEqualPackets) {
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 72;
+    settings.light.position = {0.5f, 2.0f, -1.5f};
+    expectFullBlocksEqualPackets(makeTriangleSoup(5000, 0.1f, 31), settings);
+    settings.shadowEpsilon = 0.0f;
+    expectFullBlocksEqualPackets(makeClosedSphere(48, 96, 0.8f, 0.01f, 5), settings);
+    settings.shadows = false;
+    expectFullBlocksEqualPackets(makeTriangleSoup(5000, 0.1f, 32), settings);
+}
+
 } // namespace
 } // namespace raylab::accel_test

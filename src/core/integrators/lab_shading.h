@@ -65,6 +65,21 @@ void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& setting
 // the 8-wide BVH) rather than packet by packet: the one rule the renderer and raylab-bench share.
 bool tracesInBlocks(const Bvh& bvh);
 
+// A pixel of an 8 x 8 block, from its top-left corner.
+struct BlockPixel {
+    int x, y;
+};
+
+// Where shadeLabBlock traces a full block (8 rows of 8 pixels) of a scene it does not trace in
+// blocks as four 4 x 4 tiles, one 16-ray packet each (closestHit16): the pixel of lane `lane`
+// of its packet `packet`, 0 <= both < kPacketSize. Packets 2t and 2t + 1 are tile t's upper
+// and lower 4 x 2 pixels (tiles left to right, then top to bottom); lane i is column i % 4 and
+// row i / 4 of its 4 x 2 pixels.
+constexpr BlockPixel tilePixel(int packet, int lane) {
+    const int tile = packet / 2;
+    return BlockPixel{(tile % 2) * 4 + lane % 4, (tile / 2) * 4 + (packet % 2) * 2 + lane / 4};
+}
+
 // shadeLab8 for each of rays[0, count), 0 <= count <= kPacketSize, with the same results: the
 // rays of an image block (camera rays from one origin), whose triangles and whose shadow rays'
 // blockers are found once for the block (bvh_frustum.h) where the CPU has AVX2.

@@ -1,8 +1,8 @@
 // shadeLabBlock: the packets of an image block share one frustum walk for their camera rays and
 // one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles are
-// traced one by one through the BVH, and the rows of a large scene's block two by two as packets
-// of 16 rays where the CPU has AVX-512 (closestHit16), else one by one. Either way each lane's
-// radiance is shadeLab8's.
+// traced one by one through the BVH, and a large scene's block as packets of 16 rays where the
+// CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles, else its rows two by two;
+// without AVX-512, row by row. Either way each lane's radiance is shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace raylab {
@@ -43,6 +44,58 @@ void shadeRowPair(const Scene& scene, const Bvh& bvh, const RenderSettings& sett
     finishShade(stages[1], occluded >> kPacketSize, radiance[1]);
 }
 
+// Lanes [first, first + 4) of each field of `from` into lanes [to, to + 4) of `into`'s.
+inline void copyQuarter(const RayPacket& from, int first, RayPacket& into, int to) {
+    constexpr std::size_t kBytes = 4 * sizeof(float);
+    for (int a = 0; a < 3; ++a) {
+        std::memcpy(&into.origin[a][to], &from.origin[a][first], kBytes);
+        std::memcpy(&into.direction[a][to], &from.direction[a][first], kBytes);
+    }
+    std::memcpy(&into.tMin[to], &from.tMin[first], kBytes);
+    std::memcpy(&into.tMax[to], &from.tMax[first], kBytes);
+}
+
+// shadeRowPair of a full block's rows (8 packets of 8 lanes) regrouped as four 4 x 4 tiles
+// (tilePixel): a square of pixels is a narrower frustum than two rows, so fewer nodes pass its
+// tests. radiance[r] is row r's, as for the rows.
+void shadeTiles(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
+                const RayPacket* rows, RadiancePacket* radiance, RayCounts& counts) {
+    auto tiles = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
+    for (int p = 0; p < kPacketSize; ++p) {
+        for (int half = 0; half < 2; ++half) {
+            const BlockPixel corner = tilePixel(p, half * 4);
+            copyQuarter(rows[corner.y], corner.x, tiles[p], half * 4);
+        }
+        tiles[p].lanes = firstLanes(kPacketSize);
+    }
+    RadiancePacket tileRadiance[kPacketSize];
+    for (int p = 0; p < kPacketSize; p += 2) {
+        shadeRowPair(scene, bvh, settings, &tiles[p], &tileRadiance[p], counts);
+    }
+    for (int p = 0; p < kPacketSize; ++p) {
+        for (int half = 0; half < 2; ++half) {
+            const BlockPixel corner = tilePixel(p, half * 4);
+            for (int c = 0; c < 3; ++c) {
+                std::memcpy(&radiance[corner.y].value[c][corner.x],
+                            &tileRadiance[p].value[c][half * 4], 4 * sizeof(float));
+            }
+        }
+    }
+}
+
+// Whether rays are a full block: 8 packets of 8 lanes.
+bool fullBlock(const RayPacket* rays, int count) {
+    if (count != kPacketSize) {
+        return false;
+    }
+    for (int k = 0; k < count; ++k) {
+        if (rays[k].lanes != firstLanes(kPacketSize)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 // shadeLabBlock, with the camera rays' frustum from `camera` and `rect` when camera is set.
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
@@ -51,6 +104,10 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
         static const bool pairs = bvhPacket16Supported();
         int k = 0;
         if (pairs && !bvh.wideNodes.empty()) {
+            if (fullBlock(rays, count)) {
+                shadeTiles(scene, bvh, settings, rays, radiance, counts);
+                return;
+            }
             for (; k + 1 < count; k += 2) {
                 shadeRowPair(scene, bvh, settings, &rays[k], &radiance[k], counts);
             }
