@@ -69,6 +69,17 @@ TEST(BvhSimd, SoupRandomRays) {
     expectSimdEqualsScalar(makeTriangleSoup(20000, 0.05f, 2), makeRandomRays(20000, 3));
 }
 
+// Segments reaching back past their origins: the children's entry distances are negative too,
+// which the order of the pushed children (by their distances' bits) must handle.
+TEST(BvhSimd, SoupRaysWithNegativeTMin) {
+    std::vector<Ray> rays = makeRandomRays(20000, 8);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        rays[i].tMin = -3.0f + 0.25f * static_cast<float>(i % 8);
+        rays[i].tMax = i % 3 == 0 ? 1.5f : kInfinity;
+    }
+    expectSimdEqualsScalar(makeTriangleSoup(20000, 0.05f, 9), rays);
+}
+
 TEST(BvhSimd, SoupAxisAlignedRays) {
     expectSimdEqualsScalar(makeTriangleSoup(20000, 0.05f, 4), makeAxisAlignedRays(20000, 1.1f, 5));
 }

@@ -19,6 +19,7 @@
 #include "watertight_avx2.h"
 
 #include <cmath>
+#include <cstdint>
 #include <glm/common.hpp>
 #include <immintrin.h>
 #include <utility>
@@ -85,7 +86,7 @@ RAYLAB_AVX2 inline bool makeWideRay(const Ray& ray, WideRay& r) {
 // Slab test of the 8 children (bvh_box_ray.h's hitBox, 8 at once). Returns the mask of children
 // whose box overlaps (tMin, limit] and their entry distances.
 RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const WideRay& r, float limit,
-                                   __m256& tNear) {
+                                   __m256& tNear, __m256& hit) {
     const float* b = &node.lower[0][0];
     __m256 t0[3], t1[3];
     for (int a = 0; a < 3; ++a) {
@@ -98,8 +99,8 @@ RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const WideRay& r, fl
     const __m256 tf =
         _mm256_min_ps(_mm256_min_ps(t1[0], t1[1]), _mm256_min_ps(t1[2], _mm256_set1_ps(limit)));
     tNear = tn;
-    return _mm256_movemask_ps(
-        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ));
+    hit = _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ);
+    return _mm256_movemask_ps(hit);
 }
 
 // The watertight test of 8 triangles against the ray (watertight_avx2.h).
@@ -138,30 +139,57 @@ struct StackEntry {
     uint32_t ref;
     float tNear;
 };
+static_assert(sizeof(StackEntry) == 8, "pushChildren writes entries as pairs of 32-bit lanes");
 
-// Pushes the hit children of a node, farthest first, and returns the nearest (not pushed).
-RAYLAB_AVX2 inline uint32_t pushChildren(const BvhWideNode& node, int mask, __m256 tNear,
-                                         StackEntry* stack, int& size) {
-    alignas(32) float t[kWideLanes];
-    _mm256_store_ps(t, tNear);
+// One layer of sortDescending: each lane meets `partner` (the lane its shuffle brought) and keeps
+// the larger key where bit `lane` of TakeMax is set, the smaller elsewhere.
+template <int TakeMax> RAYLAB_AVX2 inline __m256i sortLayer(__m256i keys, __m256i partner) {
+    return _mm256_blend_epi32(_mm256_min_epi32(keys, partner), _mm256_max_epi32(keys, partner),
+                              TakeMax);
+}
+
+// The 8 keys in descending order: a bitonic network of six layers, no branches.
+RAYLAB_AVX2 inline __m256i sortDescending(__m256i k) {
+    k = sortLayer<0x99>(k, _mm256_shuffle_epi32(k, 0xb1));
+    k = sortLayer<0xc3>(k, _mm256_shuffle_epi32(k, 0x4e));
+    k = sortLayer<0xa5>(k, _mm256_shuffle_epi32(k, 0xb1));
+    k = sortLayer<0x0f>(k, _mm256_permute2x128_si256(k, k, 0x01));
+    k = sortLayer<0x33>(k, _mm256_shuffle_epi32(k, 0x4e));
+    k = sortLayer<0x55>(k, _mm256_shuffle_epi32(k, 0xb1));
+    return k;
+}
+
+// Pushes the hit children of a node (lanes of `hit` all ones), farthest first, and returns the
+// nearest (not pushed). The order is by entry distance to within 8 ulps (the key's low 3 bits
+// hold the lane), which only the visiting order depends on: each entry keeps its exact tNear.
+// Writes kWideLanes entries from stack[size] on, whatever the count: the stack has room.
+RAYLAB_AVX2 inline uint32_t pushChildren(const BvhWideNode& node, int mask, __m256 hit,
+                                         __m256 tNear, StackEntry* stack, int& size) {
     if ((mask & (mask - 1)) == 0) {
         return node.child[__builtin_ctz(static_cast<unsigned>(mask))];
     }
-    StackEntry hits[kWideLanes];
-    int n = 0;
-    for (unsigned m = static_cast<unsigned>(mask); m != 0; m &= m - 1) {
-        const int c = __builtin_ctz(m);
-        // Insertion sort, nearest last.
-        int i = n++;
-        for (; i > 0 && hits[i - 1].tNear < t[c]; --i) {
-            hits[i] = hits[i - 1];
-        }
-        hits[i] = {node.child[c], t[c]};
-    }
-    for (int i = 0; i < n - 1; ++i) {
-        stack[size++] = hits[i];
-    }
-    return hits[n - 1].ref;
+    // Float bits made monotonic as signed integers (negative floats' magnitude bits flipped),
+    // above INT_MIN for every non-NaN distance; missed lanes get INT_MIN and sort last.
+    const __m256i bits = _mm256_castps_si256(tNear);
+    const __m256i ordered =
+        _mm256_xor_si256(bits, _mm256_srli_epi32(_mm256_srai_epi32(bits, 31), 1));
+    const __m256i keys = _mm256_or_si256(_mm256_andnot_si256(_mm256_set1_epi32(7), ordered),
+                                         _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    const __m256i sorted = sortDescending(
+        _mm256_blendv_epi8(_mm256_set1_epi32(INT32_MIN), keys, _mm256_castps_si256(hit)));
+    // permutevar8x32 reads the lane from each key's low 3 bits.
+    const __m256i refs = _mm256_permutevar8x32_epi32(
+        _mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)), sorted);
+    const __m256i ts = _mm256_permutevar8x32_epi32(bits, sorted);
+    const __m256i lo = _mm256_unpacklo_epi32(refs, ts); // entries 0, 1 | 4, 5
+    const __m256i hi = _mm256_unpackhi_epi32(refs, ts); // entries 2, 3 | 6, 7
+    __m256i* top = reinterpret_cast<__m256i*>(stack + size);
+    _mm256_storeu_si256(top, _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256(top + 1, _mm256_permute2x128_si256(lo, hi, 0x31));
+    const int n = __builtin_popcount(static_cast<unsigned>(mask));
+    size += n - 1;
+    return static_cast<uint32_t>(
+        _mm256_cvtsi256_si32(_mm256_permutevar8x32_epi32(refs, _mm256_set1_epi32(n - 1))));
 }
 
 // What a traversal counts: nothing (the renderer's), or a TraversalCost.
@@ -184,17 +212,18 @@ RAYLAB_AVX2 Hit closestHitWideWith(const Bvh& bvh, const Ray& original, Cost cos
     }
     float limit = original.tMax; // best.t once a hit is found
     float bestDet = 1.0f;        // best.u and best.v hold e1 and e2 until divided by this
-    StackEntry stack[kWideStackSize];
+    StackEntry
+        stack[kWideStackSize + kWideLanes]; // + kWideLanes: pushChildren writes above the top
     int size = 0;
     uint32_t ref = 0; // the root
     for (;;) {
         if (!isLeaf(ref)) {
-            __m256 tNear;
+            __m256 tNear, hit;
             const BvhWideNode& node = bvh.wideNodes[ref];
             cost.node();
-            const int mask = hitChildren(node, r, limit, tNear);
+            const int mask = hitChildren(node, r, limit, tNear, hit);
             if (mask != 0) {
-                ref = pushChildren(node, mask, tNear, stack, size);
+                ref = pushChildren(node, mask, hit, tNear, stack, size);
                 continue;
             }
         } else {
@@ -264,10 +293,10 @@ RAYLAB_AVX2 bool anyHitWideWith(const Bvh& bvh, const Ray& original, Cost cost) 
     uint32_t ref = 0;
     for (;;) {
         if (!isLeaf(ref)) {
-            __m256 tNear;
+            __m256 tNear, hit;
             const BvhWideNode& node = bvh.wideNodes[ref];
             cost.node();
-            const int mask = hitChildren(node, r, limit, tNear);
+            const int mask = hitChildren(node, r, limit, tNear, hit);
             // Order does not matter for any hit: push all but one, descend into that one.
             if (mask != 0) {
                 unsigned m = static_cast<unsigned>(mask);
