@@ -2,7 +2,7 @@
 
 #include "io/helper_process.h"
 
-#include "io/huge_pages.h"
+#include "core/huge_pages.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -3,7 +3,7 @@
 
 #include "io/import_stream.h"
 
-#include "io/huge_pages.h"
+#include "core/huge_pages.h"
 
 #include <algorithm>
 #include <bit>

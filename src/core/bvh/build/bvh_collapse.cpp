@@ -13,7 +13,7 @@
 
 #include "bvh/build/bvh_collapse.h"
 
-#include "bvh/build/bvh_huge_pages.h"
+#include "huge_pages.h"
 
 #include <algorithm>
 #include <vector>
@@ -272,11 +272,11 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
     if (overflow || blocks > kWideFirstBlockMask || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
         return false;
     }
-    // Allocated, advised huge pages, then first touched (bvh_huge_pages.h).
+    // Allocated, advised huge pages, then first touched (huge_pages.h).
     bvh.wideNodes.reserve(nodes);
     bvh.triangleBlocks.reserve(blocks);
-    adviseBvhHugePages(bvh.wideNodes.data(), nodes * sizeof(BvhWideNode));
-    adviseBvhHugePages(bvh.triangleBlocks.data(), blocks * sizeof(BvhTriangleBlock));
+    adviseHugePages(bvh.wideNodes.data(), nodes * sizeof(BvhWideNode));
+    adviseHugePages(bvh.triangleBlocks.data(), blocks * sizeof(BvhTriangleBlock));
     bvh.wideNodes.resize(nodes);
     bvh.triangleBlocks.resize(blocks);
     std::copy(top.nodes.begin(), top.nodes.end(), bvh.wideNodes.begin());

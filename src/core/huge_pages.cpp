@@ -1,11 +1,11 @@
-#include "bvh/build/bvh_huge_pages.h"
+#include "huge_pages.h"
 
 #include <cstdint>
 #include <sys/mman.h>
 
 namespace raylab {
 
-void adviseBvhHugePages(void* data, std::size_t bytes) {
+void adviseHugePages(void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
     constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
     const auto begin = reinterpret_cast<std::uintptr_t>(data);
