@@ -212,8 +212,8 @@ RAYLAB_AVX2 Hit closestHitWideWith(const Bvh& bvh, const Ray& original, Cost cos
     }
     float limit = original.tMax; // best.t once a hit is found
     float bestDet = 1.0f;        // best.u and best.v hold e1 and e2 until divided by this
-    StackEntry
-        stack[kWideStackSize + kWideLanes]; // + kWideLanes: pushChildren writes above the top
+    // kWideLanes more than the deepest stack: pushChildren writes 8 entries above the top.
+    StackEntry stack[kWideStackSize + kWideLanes];
     int size = 0;
     uint32_t ref = 0; // the root
     for (;;) {
