@@ -53,25 +53,6 @@ ObjectSplit objectBinFrame(const Aabb& centroids, int bins) {
     return frame;
 }
 
-namespace {
-
-// The bins holding a reference on any axis, bit b for bin b.
-uint32_t usedBins(const BinSet& bins, int binCount) {
-    uint32_t used = 0;
-    for (int b = 0; b < binCount; b += 4) {
-        const auto at = [&](int a) {
-            return _mm_loadu_si128(reinterpret_cast<const __m128i*>(&bins.count[a][b]));
-        };
-        const __m128i any = _mm_or_si128(_mm_or_si128(at(0), at(1)), at(2));
-        const int empty =
-            _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(any, _mm_setzero_si128())));
-        used |= static_cast<uint32_t>(~empty & 15) << b;
-    }
-    return used & ((binCount >= 32 ? 0u : 1u << binCount) - 1u);
-}
-
-} // namespace
-
 ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSplit& frame) {
     const int binCount = frame.bins;
     // The three axes are swept at once, one SSE lane each. Plane k lies between bins k - 1 and
@@ -82,7 +63,7 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
     // a small node uses few of its bins.
     int used[kMaxBins]; // the used bins, in increasing order
     int usedCount = 0;
-    for (uint32_t mask = usedBins(bins, binCount); mask != 0; mask &= mask - 1) {
+    for (uint32_t mask = bins.usedMask(binCount); mask != 0; mask &= mask - 1) {
         used[usedCount++] = __builtin_ctz(mask);
     }
     // rightCost[j]: the cost of the side right of plane used[j - 1] + 1, bins used[j] on.

@@ -84,7 +84,8 @@ public:
 
 private:
     // The split of references [first, first + count) of a node, binned by chunks on the team
-    // when there is one (each chunk's bins then stay in chunkBins), else in one go.
+    // when there is one (each chunk's bins then stay in chunkBins), else in one go, into
+    // `scratch`, which must come empty (as constructed) and is left empty.
     SplitChoice choose(const PrimRecord* first, uint32_t count, const RecordBounds& bounds,
                        int depth, uint32_t splitBudget, BuildTeam* team, BinSet& scratch,
                        std::vector<BinSet>& chunkBins) const;
