@@ -49,11 +49,10 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
         choice.kind = orMedian;
         return choice;
     }
-    const std::size_t chunks = team ? (count + kBuildChunkSize - 1) / kBuildChunkSize : 1;
-    auto chunkBegin = [&](std::size_t i) {
-        return first + std::min<std::size_t>(count, i * kBuildChunkSize);
-    };
-    auto chunkEnd = [&](std::size_t i) { return chunks == 1 ? first + count : chunkBegin(i + 1); };
+    const BuildChunks cut(count);
+    const std::size_t chunks = team ? cut.count : 1;
+    auto chunkBegin = [&](std::size_t i) { return chunks == 1 ? first : first + cut.begin(i); };
+    auto chunkEnd = [&](std::size_t i) { return chunks == 1 ? first + count : first + cut.end(i); };
 
     // The best object split, from the bins of every chunk merged in chunk order.
     // As many bins for small nodes as for large ones: fewer (4 plus one per 20 references, as
