@@ -97,6 +97,31 @@ struct BinSet {
             }
         }
     }
+    // Bit b set when bin b of the first `bins` holds references on some axis.
+    uint32_t usedMask(int bins) const {
+        uint32_t used = 0;
+        for (int b = 0; b < bins; b += 4) { // count[][kMaxBins] holds them all
+            const auto at = [&](int a) {
+                return _mm_loadu_si128(reinterpret_cast<const __m128i*>(&count[a][b]));
+            };
+            const __m128i any = _mm_or_si128(_mm_or_si128(at(0), at(1)), at(2));
+            const int empty =
+                _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(any, _mm_setzero_si128())));
+            used |= static_cast<uint32_t>(~empty & 15) << b;
+        }
+        return used & ((bins >= 32 ? 0u : 1u << bins) - 1u);
+    }
+    // Empties the first `bins` bins (binRecords extends a bin's box only with its count): as
+    // reset(), cheaper when few are used.
+    void clearUsed(int bins) {
+        for (uint32_t used = usedMask(bins); used != 0; used &= used - 1) {
+            const int b = __builtin_ctz(used);
+            for (int a = 0; a < 3; ++a) {
+                box[a][b] = SseBox{};
+                count[a][b] = 0;
+            }
+        }
+    }
     void merge(const BinSet& o, int bins) {
         for (int a = 0; a < 3; ++a) {
             for (int b = 0; b < bins; ++b) {

@@ -30,15 +30,18 @@ constexpr std::size_t kMinTaskSize = 4096;  // smallest subtree worth a parallel
 constexpr std::size_t kBoundsChunk = 65536; // records per chunk of the root's bounds
 
 // One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
-// largest |coordinate| of a valid vertex.
+// largest |coordinate| of a valid vertex. Chunk c writes its records from c * kBoundsChunk on,
+// in the array itself; only where triangles were skipped do later chunks move down after.
 RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipped,
                          float& magnitude) {
     const std::size_t triangles = scene.triangles.size();
     const std::size_t chunks = (triangles + kBoundsChunk - 1) / kBoundsChunk;
-    std::vector<RecordVector> parts(chunks);
+    RecordVector records(triangles);
+    std::vector<std::size_t> made(chunks, 0);
     std::vector<float> largest(chunks, 0.0f);
     team.forEach(chunks, [&](std::size_t c) {
-        parts[c].reserve(kBoundsChunk);
+        PrimRecord* out = records.data() + c * kBoundsChunk;
+        std::size_t n = 0;
         for (std::size_t i = c * kBoundsChunk; i < std::min(triangles, (c + 1) * kBoundsChunk);
              ++i) {
             const Triangle& t = scene.triangles[i];
@@ -50,20 +53,21 @@ RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipp
             largest[c] =
                 std::max({largest[c], glm::abs(lower).x, glm::abs(lower).y, glm::abs(lower).z,
                           glm::abs(upper).x, glm::abs(upper).y, glm::abs(upper).z});
-            parts[c].push_back({lower, static_cast<uint32_t>(i), upper, 0.0f});
+            out[n++] = {lower, static_cast<uint32_t>(i), upper, 0.0f};
         }
+        made[c] = n;
     });
-    std::vector<std::size_t> at(chunks + 1, 0);
+    std::size_t at = 0;
     for (std::size_t c = 0; c < chunks; ++c) {
-        at[c + 1] = at[c] + parts[c].size();
+        if (at != c * kBoundsChunk) {
+            std::copy_n(records.begin() + static_cast<std::ptrdiff_t>(c * kBoundsChunk), made[c],
+                        records.begin() + static_cast<std::ptrdiff_t>(at));
+        }
+        at += made[c];
         magnitude = std::max(magnitude, largest[c]);
     }
-    skipped = triangles - at[chunks];
-    RecordVector records(at[chunks]);
-    team.forEach(chunks, [&](std::size_t c) {
-        std::copy(parts[c].begin(), parts[c].end(),
-                  records.begin() + static_cast<std::ptrdiff_t>(at[c]));
-    });
+    skipped = triangles - at;
+    records.resize(at);
     return records;
 }
 

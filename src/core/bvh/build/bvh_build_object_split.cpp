@@ -57,19 +57,23 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
     const int binCount = frame.bins;
     // The three axes are swept at once, one SSE lane each. Plane k lies between bins k - 1 and
     // k. A plane next to an empty bin splits the references as its neighbour does, at the same
-    // cost; the earliest plane of the cheapest cost is kept, on the lowest such axis.
+    // cost; the earliest plane of the cheapest cost is kept, on the lowest such axis. So only
+    // the planes just after a bin used on some axis are costed (the others cost exactly what
+    // the plane before them does, with the same boxes and counts), and only used bins swept:
+    // a small node uses few of its bins.
+    int used[kMaxBins]; // the used bins, in increasing order
+    int usedCount = 0;
+    for (uint32_t mask = bins.usedMask(binCount); mask != 0; mask &= mask - 1) {
+        used[usedCount++] = __builtin_ctz(mask);
+    }
+    // rightCost[j]: the cost of the side right of plane used[j - 1] + 1, bins used[j] on.
     float rightCost[kMaxBins][4];
-    __m128 rightLower[kMaxBins][3], rightUpper[kMaxBins][3];
     AxisBoxes side;
     __m128i n = _mm_setzero_si128();
-    for (int k = binCount - 1; k > 0; --k) {
-        side.extend(bins, k);
-        n = _mm_add_epi32(n, countsOf(bins, k));
-        _mm_storeu_ps(rightCost[k], _mm_mul_ps(side.areas(), _mm_cvtepi32_ps(n)));
-        for (int a = 0; a < 3; ++a) {
-            rightLower[k][a] = side.lower[a];
-            rightUpper[k][a] = side.upper[a];
-        }
+    for (int j = usedCount - 1; j > 0; --j) {
+        side.extend(bins, used[j]);
+        n = _mm_add_epi32(n, countsOf(bins, used[j]));
+        _mm_storeu_ps(rightCost[j], _mm_mul_ps(side.areas(), _mm_cvtepi32_ps(n)));
     }
     const __m128i all = _mm_set1_epi32(static_cast<int>(count));
     const __m128 splittable = _mm_cmpgt_ps(
@@ -78,19 +82,20 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
     __m128i bestPlane = _mm_setzero_si128();
     side = AxisBoxes{};
     n = _mm_setzero_si128();
-    for (int k = 1; k < binCount; ++k) {
-        side.extend(bins, k - 1);
-        n = _mm_add_epi32(n, countsOf(bins, k - 1));
-        const __m128 cost =
-            _mm_add_ps(_mm_mul_ps(side.areas(), _mm_cvtepi32_ps(n)), _mm_loadu_ps(rightCost[k]));
+    // A plane after the last used bin has nothing on its right: never a split.
+    for (int j = 0; j + 1 < usedCount; ++j) {
+        side.extend(bins, used[j]);
+        n = _mm_add_epi32(n, countsOf(bins, used[j]));
+        const __m128 cost = _mm_add_ps(_mm_mul_ps(side.areas(), _mm_cvtepi32_ps(n)),
+                                       _mm_loadu_ps(rightCost[j + 1]));
         // Both sides non-empty (counts are below 2^31), the axis not flat, and cheaper.
         const __m128i twoSides =
             _mm_and_si128(_mm_cmpgt_epi32(n, _mm_setzero_si128()), _mm_cmplt_epi32(n, all));
         const __m128 better = _mm_and_ps(_mm_and_ps(_mm_castsi128_ps(twoSides), splittable),
                                          _mm_cmplt_ps(cost, bestCost));
         bestCost = select(better, bestCost, cost);
-        bestPlane = _mm_castps_si128(
-            select(better, _mm_castsi128_ps(bestPlane), _mm_castsi128_ps(_mm_set1_epi32(k))));
+        bestPlane = _mm_castps_si128(select(better, _mm_castsi128_ps(bestPlane),
+                                            _mm_castsi128_ps(_mm_set1_epi32(used[j] + 1))));
     }
     alignas(16) float costs[4];
     alignas(16) int32_t planes[4];
@@ -108,14 +113,17 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
     }
     const int a = best.axis, k = planes[a];
     best.bin = k;
-    SseBox left;
+    SseBox left, right;
     for (int b = 0; b < k; ++b) {
         left.extend(bins.box[a][b].lower, bins.box[a][b].upper);
         best.leftCount += bins.count[a][b];
     }
+    for (int b = binCount - 1; b >= k; --b) {
+        right.extend(bins.box[a][b].lower, bins.box[a][b].upper);
+    }
     SseBox overlap;
-    overlap.lower = _mm_max_ps(left.lower, rightLower[k][a]);
-    overlap.upper = _mm_min_ps(left.upper, rightUpper[k][a]);
+    overlap.lower = _mm_max_ps(left.lower, right.lower);
+    overlap.upper = _mm_min_ps(left.upper, right.upper);
     best.overlapArea = overlap.toAabb().area();
     return best;
 }

@@ -10,6 +10,7 @@
 #include "bvh/build/bvh_spatial_split.h"
 #include "bvh/bvh.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -84,7 +85,8 @@ public:
 
 private:
     // The split of references [first, first + count) of a node, binned by chunks on the team
-    // when there is one (each chunk's bins then stay in chunkBins), else in one go.
+    // when there is one (each chunk's bins then stay in chunkBins), else in one go, into
+    // `scratch`, which must come empty (as constructed) and is left empty.
     SplitChoice choose(const PrimRecord* first, uint32_t count, const RecordBounds& bounds,
                        int depth, uint32_t splitBudget, BuildTeam* team, BinSet& scratch,
                        std::vector<BinSet>& chunkBins) const;
@@ -94,7 +96,24 @@ private:
     BuildContext context_;
 };
 
-// References per chunk of a node split on the team.
+// References per chunk of a node split on the team, at most.
 inline constexpr std::size_t kBuildChunkSize = 16384;
+// Chunks of a node split on the team, at least: a node of fewer than 2 kBuildChunkSize
+// references still keeps every thread of a small team busy.
+inline constexpr std::size_t kMinBuildChunks = 4;
+
+// How a node's references [first, first + count) split on the team are cut into chunks: as
+// evenly as they go, by a rule of the count alone (never of the team's size).
+struct BuildChunks {
+    std::size_t count = 0; // chunks
+    explicit BuildChunks(std::size_t references)
+        : count(std::max(kMinBuildChunks, (references + kBuildChunkSize - 1) / kBuildChunkSize)),
+          references_(references) {}
+    std::size_t begin(std::size_t i) const { return references_ * i / count; }
+    std::size_t end(std::size_t i) const { return references_ * (i + 1) / count; }
+
+private:
+    std::size_t references_;
+};
 
 } // namespace raylab

@@ -7,19 +7,6 @@
 
 namespace raylab {
 
-namespace {
-
-// Chunk i of references [first, first + count).
-const PrimRecord* chunkBegin(const PrimRecord* first, uint32_t count, std::size_t i) {
-    return first + std::min<std::size_t>(count, i * kBuildChunkSize);
-}
-
-const PrimRecord* chunkEnd(const PrimRecord* first, uint32_t count, std::size_t i) {
-    return first + std::min<std::size_t>(count, (i + 1) * kBuildChunkSize);
-}
-
-} // namespace
-
 void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std::size_t deferBelow,
                               std::vector<BuildTask>& deferred,
                               std::deque<RecordVector>& arrays) const {
@@ -39,16 +26,19 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
         out.nodes[task.slot].upper = box.upper;
         const SplitChoice choice = choose(task.first, count, task.bounds, task.depth,
                                           task.splitBudget, &team, scratch, chunkBins);
-        const std::size_t chunks = (count + kBuildChunkSize - 1) / kBuildChunkSize;
+        const BuildChunks cut(count);
+        const std::size_t chunks = cut.count;
+        const auto chunkBegin = [&](std::size_t i) { return task.first + cut.begin(i); };
+        const auto chunkEnd = [&](std::size_t i) { return task.first + cut.end(i); };
         BuildTask left, right;
         SplitKind kind = choice.kind;
         if (kind == SplitKind::Spatial) {
             std::vector<RecordVector> lefts(chunks), rights(chunks);
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
-                applySpatialSplit(*context_.scene, chunkBegin(task.first, count, i),
-                                  chunkEnd(task.first, count, i), choice.spatial, context_.slack,
-                                  lefts[i], rights[i], leftBounds[i], rightBounds[i]);
+                applySpatialSplit(*context_.scene, chunkBegin(i), chunkEnd(i), choice.spatial,
+                                  context_.slack, lefts[i], rights[i], leftBounds[i],
+                                  rightBounds[i]);
             });
             std::size_t leftSize = 0, rightSize = 0;
             for (std::size_t i = 0; i < chunks; ++i) {
@@ -90,15 +80,12 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 const uint32_t n = chunks == 1 ? choice.object.leftCount
                                                : leftCountOf(chunkBins[i], choice.object);
                 l += n;
-                r += static_cast<std::size_t>(chunkEnd(task.first, count, i) -
-                                              chunkBegin(task.first, count, i)) -
-                     n;
+                r += static_cast<std::size_t>(chunkEnd(i) - chunkBegin(i)) - n;
             }
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
-                partitionRecords(chunkBegin(task.first, count, i), chunkEnd(task.first, count, i),
-                                 choice.object, task.spare + leftAt[i], task.spare + rightAt[i],
-                                 leftBounds[i], rightBounds[i]);
+                partitionRecords(chunkBegin(i), chunkEnd(i), choice.object, task.spare + leftAt[i],
+                                 task.spare + rightAt[i], leftBounds[i], rightBounds[i]);
             });
             for (std::size_t i = 0; i < chunks; ++i) {
                 left.bounds.merge(leftBounds[i]);

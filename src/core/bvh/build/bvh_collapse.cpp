@@ -7,9 +7,10 @@
 // measured no slower (PERFORMANCE.md, "BVH memory").
 //
 // The top of the wide tree is made first, down to binary subtrees of at most a number of
-// triangles that depends only on the tree; those become wide subtrees, made in parallel into
-// their own arrays and appended in a fixed order (top first, then each subtree's nodes and
-// blocks), so the result is the same whatever the thread count.
+// triangles that depends only on the tree; those become wide subtrees, made in parallel, their
+// nodes into their own arrays appended in a fixed order (top first, then each subtree's), their
+// blocks straight into the BVH's array at offsets known from the binary tree in the same order,
+// so the result is the same whatever the thread count.
 
 #include "bvh/build/bvh_collapse.h"
 
@@ -39,10 +40,13 @@ struct PendingPart {
     int depth = 0; // of its root in the whole wide tree
 };
 
-// A part of the wide tree in its own arrays: inner children index nodes, leaves index blocks.
+// A part of the wide tree: its nodes in its own array (inner children index them), its blocks
+// in the BVH's from `firstBlock` on (leaves index them there).
 struct WidePart {
     std::vector<BvhWideNode> nodes; // nodes[0] is its root
-    std::vector<BvhTriangleBlock> blocks;
+    BvhTriangleBlock* blocks = nullptr;
+    uint32_t firstBlock = 0;
+    uint32_t blockCount = 0;
     int depth = 0;         // deepest level reached, counted in the whole tree
     bool overflow = false; // a leaf or the block count does not fit a child reference
 };
@@ -54,24 +58,29 @@ struct BinaryTree {
     const Scene& scene;
     const std::vector<uint32_t>& leafScene; // leaf triangle -> scene triangle
     std::vector<Range> ranges;              // per binary node
-    std::vector<uint32_t> slotOf;           // leaf triangle -> its lane in its part's blocks
+    std::vector<uint32_t> slotOf;           // leaf triangle -> its lane in the BVH's blocks
     std::vector<bool> leaf;                 // per binary node: it becomes one wide leaf
+    std::vector<uint32_t> blocksUnder;      // per binary node: the blocks of its wide subtree
 
     BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves)
         : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()), slotOf(leaves.size()),
-          leaf(b.nodes.size()) {
+          leaf(b.nodes.size()), blocksUnder(b.nodes.size()) {
         // Children always follow their parent, so a backwards pass sees children first.
         for (std::size_t i = b.nodes.size(); i-- > 0;) {
             const BvhNode& n = b.nodes[i];
             if (n.isLeaf()) {
                 ranges[i] = {n.index, n.count};
                 leaf[i] = true;
-                continue;
+            } else {
+                const uint32_t l = n.index, r = n.index + 1;
+                ranges[i] = {ranges[l].first, ranges[l].count + ranges[r].count};
+                leaf[i] = ranges[i].count <= kLeafMerge ||
+                          (ranges[l].count <= kLeafMerge && ranges[r].count <= kLeafMerge);
+                blocksUnder[i] = blocksUnder[l] + blocksUnder[r];
             }
-            const uint32_t l = n.index, r = n.index + 1;
-            ranges[i] = {ranges[l].first, ranges[l].count + ranges[r].count};
-            leaf[i] = ranges[i].count <= kLeafMerge ||
-                      (ranges[l].count <= kLeafMerge && ranges[r].count <= kLeafMerge);
+            if (leaf[i]) { // a wide leaf of addBlocks
+                blocksUnder[i] = (ranges[i].count + kWideLanes - 1) / kWideLanes;
+            }
         }
     }
 
@@ -166,7 +175,7 @@ private:
                 wide.child[s] = child;
                 stack.push_back({slots[s], child, p.depth + 1});
             } else {
-                const auto first = static_cast<uint32_t>(part_.blocks.size());
+                const uint32_t first = part_.firstBlock + part_.blockCount;
                 const uint32_t blocks = addBlocks(tree_.ranges[slots[s]]);
                 if (blocks > kWideMaxLeafBlocks || first + blocks > kWideFirstBlockMask) {
                     part_.overflow = true;
@@ -182,7 +191,8 @@ private:
     uint32_t addBlocks(const Range& r) {
         uint32_t blocks = 0;
         for (uint32_t first = r.first; first < r.first + r.count; first += kWideLanes) {
-            BvhTriangleBlock block;
+            const uint32_t at = part_.firstBlock + part_.blockCount;
+            BvhTriangleBlock& block = part_.blocks[at];
             for (int lane = 0; lane < kWideLanes; ++lane) {
                 const uint32_t i = first + static_cast<uint32_t>(lane) < r.first + r.count
                                        ? first + static_cast<uint32_t>(lane)
@@ -196,11 +206,10 @@ private:
                 }
                 block.sceneIndex[lane] = tree_.leafScene[i];
                 if (i == first + static_cast<uint32_t>(lane)) {
-                    tree_.slotOf[i] = static_cast<uint32_t>(part_.blocks.size()) * kWideLanes +
-                                      static_cast<uint32_t>(lane);
+                    tree_.slotOf[i] = at * kWideLanes + static_cast<uint32_t>(lane);
                 }
             }
-            part_.blocks.push_back(block);
+            ++part_.blockCount;
             ++blocks;
         }
         return blocks;
@@ -212,23 +221,14 @@ private:
     std::vector<PendingPart>* deferred_;
 };
 
-// Moves a part's child references by its offsets in the whole arrays.
-void relocate(WidePart& part, uint32_t nodeOffset, uint32_t blockOffset) {
+// Moves a part's inner child references by its offset in the whole node array (its leaves
+// already index the whole block array).
+void relocate(WidePart& part, uint32_t nodeOffset) {
     for (BvhWideNode& n : part.nodes) {
         for (uint32_t& c : n.child) {
-            if (c == kWideEmpty) {
-                continue;
-            }
-            if ((c & kWideLeafFlag) == 0) {
+            if (c != kWideEmpty && (c & kWideLeafFlag) == 0) {
                 c += nodeOffset;
-                continue;
             }
-            const uint32_t blocks = ((c >> kWideBlockShift) & 7u) + 1;
-            const uint32_t first = (c & kWideFirstBlockMask) + blockOffset;
-            if (first + blocks > kWideFirstBlockMask) {
-                part.overflow = true;
-            }
-            c = kWideLeafFlag | (blocks - 1) << kWideBlockShift | (first & kWideFirstBlockMask);
         }
     }
 }
@@ -243,53 +243,59 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
         return false;
     }
     BinaryTree tree(bvh, scene, leafScene);
+    const uint32_t totalBlocks = tree.blocksUnder[0];
+    if (totalBlocks > kWideFirstBlockMask) {
+        return false;
+    }
+    // Every block is written below (value-initialised first by resize): allocated, advised huge
+    // pages (huge_pages.h), then first touched.
+    bvh.triangleBlocks.reserve(totalBlocks);
+    adviseHugePages(bvh.triangleBlocks.data(), totalBlocks * sizeof(BvhTriangleBlock));
+    bvh.triangleBlocks.resize(totalBlocks);
     WidePart top;
+    top.blocks = bvh.triangleBlocks.data();
     std::vector<PendingPart> pending;
     const uint32_t deferBelow =
         std::max(kMinPartTriangles, static_cast<uint32_t>(leafScene.size() / 128));
     Collapser(tree, top, deferBelow, &pending).run(0, 1);
 
+    // Each part's blocks follow the top's and the parts' before it.
     std::vector<WidePart> parts(pending.size());
+    uint32_t blockAt = top.blockCount;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        parts[i].blocks = bvh.triangleBlocks.data();
+        parts[i].firstBlock = blockAt;
+        blockAt += tree.blocksUnder[pending[i].binary];
+    }
     team.forEach(parts.size(), [&](std::size_t i) {
         parts[i].depth = pending[i].depth;
         Collapser(tree, parts[i], 0, nullptr).run(pending[i].binary, pending[i].depth);
     });
 
-    // Offsets, then every part's nodes and blocks in place, their triangles' slots moved.
-    std::vector<uint32_t> nodeAt(parts.size()), blockAt(parts.size());
-    std::size_t nodes = top.nodes.size(), blocks = top.blocks.size();
+    // Offsets, then every part's nodes in place.
+    std::vector<uint32_t> nodeAt(parts.size());
+    std::size_t nodes = top.nodes.size();
     int depth = top.depth;
     bool overflow = top.overflow;
     for (std::size_t i = 0; i < parts.size(); ++i) {
         nodeAt[i] = static_cast<uint32_t>(nodes);
-        blockAt[i] = static_cast<uint32_t>(std::min<std::size_t>(blocks, kWideFirstBlockMask));
         nodes += parts[i].nodes.size();
-        blocks += parts[i].blocks.size();
         depth = std::max(depth, parts[i].depth);
         overflow = overflow || parts[i].overflow;
         top.nodes[pending[i].parent].child[pending[i].lane] = nodeAt[i];
     }
-    if (overflow || blocks > kWideFirstBlockMask || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
+    if (overflow || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
+        std::vector<BvhTriangleBlock>().swap(bvh.triangleBlocks);
         return false;
     }
     // Allocated, advised huge pages, then first touched (huge_pages.h).
     bvh.wideNodes.reserve(nodes);
-    bvh.triangleBlocks.reserve(blocks);
     adviseHugePages(bvh.wideNodes.data(), nodes * sizeof(BvhWideNode));
-    adviseHugePages(bvh.triangleBlocks.data(), blocks * sizeof(BvhTriangleBlock));
     bvh.wideNodes.resize(nodes);
-    bvh.triangleBlocks.resize(blocks);
     std::copy(top.nodes.begin(), top.nodes.end(), bvh.wideNodes.begin());
-    std::copy(top.blocks.begin(), top.blocks.end(), bvh.triangleBlocks.begin());
     team.forEach(parts.size(), [&](std::size_t i) {
-        relocate(parts[i], nodeAt[i], blockAt[i]);
+        relocate(parts[i], nodeAt[i]);
         std::copy(parts[i].nodes.begin(), parts[i].nodes.end(), bvh.wideNodes.begin() + nodeAt[i]);
-        std::copy(parts[i].blocks.begin(), parts[i].blocks.end(),
-                  bvh.triangleBlocks.begin() + blockAt[i]);
-        const Range r = tree.ranges[pending[i].binary];
-        for (uint32_t t = r.first; t < r.first + r.count; ++t) {
-            tree.slotOf[t] += blockAt[i] * kWideLanes;
-        }
         parts[i] = WidePart{};
     });
 

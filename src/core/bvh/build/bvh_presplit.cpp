@@ -86,6 +86,7 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
     std::vector<RecordVector> outs(chunks);
     team.forEach(chunks, [&](std::size_t c) {
         RecordVector& out = outs[c];
+        out.reserve(chunkEnd(c) - c * kChunk + static_cast<std::size_t>(scale * partial[c]) + 64);
         std::vector<Aabb> work;
         for (std::size_t i = c * kChunk; i < chunkEnd(c); ++i) {
             const auto pieces = static_cast<uint32_t>(std::min(64.0, scale * priority[i]));
@@ -101,11 +102,13 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
     for (std::size_t c = 0; c < chunks; ++c) {
         at[c + 1] = at[c] + outs[c].size();
     }
-    records.resize(at[chunks]);
+    // A new array: growing the old one would copy references about to be overwritten.
+    RecordVector all(at[chunks]);
     team.forEach(chunks, [&](std::size_t c) {
-        std::copy(outs[c].begin(), outs[c].end(),
-                  records.begin() + static_cast<std::ptrdiff_t>(at[c]));
+        std::copy(outs[c].begin(), outs[c].end(), all.begin() + static_cast<std::ptrdiff_t>(at[c]));
+        RecordVector().swap(outs[c]);
     });
+    records.swap(all);
 }
 
 } // namespace raylab
