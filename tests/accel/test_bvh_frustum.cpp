@@ -93,6 +93,18 @@ bool hasRays(const Block& block) {
     return false;
 }
 
+// Leaves share triangle blocks (bvh_collapse.cpp): a lane reached through two leaves is still
+// one candidate.
+void expectDistinct(const FrustumCandidates& candidates) {
+    std::vector<uint64_t> keys;
+    for (int i = 0; i < candidates.count; ++i) {
+        keys.push_back(uint64_t{candidates.block[i]} << 8 | candidates.lane[i]);
+    }
+    std::sort(keys.begin(), keys.end());
+    EXPECT_EQ(std::adjacent_find(keys.begin(), keys.end()), keys.end())
+        << "a block's lane collected twice among " << candidates.count << " candidates";
+}
+
 // Every lane of the block: closestHitCandidates == closestHit8 when the frustum fits. The
 // frustum is the one fitted to the rays, or with `camera`, the one of the image rectangle `rect`
 // the rays were made from (frustumOfImageRect).
@@ -110,6 +122,7 @@ void expectCameraBlockExact(const Bvh& bvh, const Block& block, Tally& tally,
         return;
     }
     ++tally.withCandidates;
+    expectDistinct(candidates);
     for (int r = 0; r < block.count; ++r) {
         HitPacket expected, got;
         closestHit8(bvh, block.packets[r], expected);
@@ -137,6 +150,7 @@ void expectShadowBlockExact(const Bvh& bvh, const Block& block, const glm::vec3&
         return;
     }
     ++tally.withCandidates;
+    expectDistinct(candidates);
     for (int r = 0; r < block.count; ++r) {
         const unsigned expected = anyHit8(bvh, block.packets[r]);
         const unsigned got = anyHitCandidates(bvh, candidates, block.packets[r]);

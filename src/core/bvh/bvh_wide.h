@@ -28,8 +28,9 @@ struct alignas(64) BvhWideNode {
 static_assert(sizeof(BvhWideNode) == 256);
 
 // Eight triangles, structure of arrays: vertex[k][axis][lane] is vertex k of the lane's triangle.
-// A leaf with fewer than 8 triangles repeats its first one in the spare lanes: a duplicate finds
-// the same t and scene index, so it never changes an answer.
+// A leaf's triangles are consecutive lanes of its blocks, and leaves share blocks
+// (bvh_collapse.cpp): testing a leaf tests its blocks' other triangles too, which never changes
+// an answer (they are the scene's own). Lanes no leaf takes repeat the block's first triangle.
 struct alignas(32) BvhTriangleBlock {
     float vertex[3][3][kWideLanes];
     uint32_t sceneIndex[kWideLanes];

@@ -3,14 +3,21 @@
 // A binary subtree with at most kLeafMerge triangles becomes one leaf: one 8-lane triangle
 // test costs about as much as a 4-lane one, and it saves the box tests below it. A subtree whose
 // two children are such leaves becomes one leaf of two blocks: it saves the wide node that would
-// hold just those two (a third of the dragon's wide nodes did) and packs the blocks fuller, and
-// measured no slower (PERFORMANCE.md, "BVH memory").
+// hold just those two (a third of the dragon's wide nodes did) and measured no slower
+// (PERFORMANCE.md, "BVH memory").
+//
+// Leaves share blocks: each leaf's triangles take consecutive lanes of one block (a leaf of more
+// than 8, of two), the leaves of a part packed best fit, largest first. A ray that tests a
+// leaf's block tests the other leaves' lanes too; those are real triangles of the scene, and the
+// closest-hit rule (nearest t, then lowest scene index) is a property of the set of triangles
+// hit, so testing more of them never changes an answer. Lanes no leaf takes repeat the block's
+// first triangle (bvh_wide.h).
 //
 // The top of the wide tree is made first, down to binary subtrees of at most a number of
 // triangles that depends only on the tree; those become wide subtrees, made in parallel, their
-// nodes into their own arrays appended in a fixed order (top first, then each subtree's), their
-// blocks straight into the BVH's array at offsets known from the binary tree in the same order,
-// so the result is the same whatever the thread count.
+// nodes and their blocks counted in their own part; the parts are then placed in a fixed order
+// (top first, then each subtree's) and their blocks written in parallel, so the result is the
+// same whatever the thread count.
 
 #include "bvh/build/bvh_collapse.h"
 
@@ -40,15 +47,27 @@ struct PendingPart {
     int depth = 0; // of its root in the whole wide tree
 };
 
-// A part of the wide tree: its nodes in its own array (inner children index them), its blocks
-// in the BVH's from `firstBlock` on (leaves index them there).
+// A wide leaf: child `slot` of the part's node `node`, whose triangles go to lanes
+// [lane, lane + triangles.count) counted from the start of the part's block `block` (running on
+// into the next block past lane 7).
+struct LeafPlacement {
+    Range triangles;
+    uint32_t node = 0; // in the part's nodes
+    uint32_t slot = 0;
+    uint32_t block = 0; // in the part's blocks
+    uint32_t lane = 0;
+};
+
+// A part of the wide tree: its nodes in its own array (inner children index them) and its
+// blocks, counted in the part (leaves index them there) until the part is placed at firstBlock
+// of the BVH's array.
 struct WidePart {
     std::vector<BvhWideNode> nodes; // nodes[0] is its root
-    BvhTriangleBlock* blocks = nullptr;
+    std::vector<LeafPlacement> leaves;
+    std::vector<uint8_t> lanesUsed; // per block of the part: lanes [0, lanesUsed) hold leaves
     uint32_t firstBlock = 0;
-    uint32_t blockCount = 0;
     int depth = 0;         // deepest level reached, counted in the whole tree
-    bool overflow = false; // a leaf or the block count does not fit a child reference
+    bool overflow = false; // a leaf does not fit a child reference
 };
 
 // What collapsing needs from the binary tree; shared read-only by the threads, except slotOf,
@@ -60,11 +79,10 @@ struct BinaryTree {
     std::vector<Range> ranges;              // per binary node
     std::vector<uint32_t> slotOf;           // leaf triangle -> its lane in the BVH's blocks
     std::vector<bool> leaf;                 // per binary node: it becomes one wide leaf
-    std::vector<uint32_t> blocksUnder;      // per binary node: the blocks of its wide subtree
 
     BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves)
         : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()), slotOf(leaves.size()),
-          leaf(b.nodes.size()), blocksUnder(b.nodes.size()) {
+          leaf(b.nodes.size()) {
         // Children always follow their parent, so a backwards pass sees children first.
         for (std::size_t i = b.nodes.size(); i-- > 0;) {
             const BvhNode& n = b.nodes[i];
@@ -76,10 +94,6 @@ struct BinaryTree {
                 ranges[i] = {ranges[l].first, ranges[l].count + ranges[r].count};
                 leaf[i] = ranges[i].count <= kLeafMerge ||
                           (ranges[l].count <= kLeafMerge && ranges[r].count <= kLeafMerge);
-                blocksUnder[i] = blocksUnder[l] + blocksUnder[r];
-            }
-            if (leaf[i]) { // a wide leaf of addBlocks
-                blocksUnder[i] = (ranges[i].count + kWideLanes - 1) / kWideLanes;
             }
         }
     }
@@ -105,6 +119,7 @@ public:
             part_.depth = std::max(part_.depth, p.depth);
             fill(p, stack);
         }
+        packLeaves();
     }
 
 private:
@@ -150,6 +165,29 @@ private:
             areas[best] = areaIfOpens(slots[best]);
             add(node(opened).index + 1);
         }
+        // Slots to spare: leaves of two blocks (two binary leaves of up to 8 merged) are split,
+        // largest first, into their halves, each a leaf of one block. A ray then tests only the
+        // halves whose boxes it enters, and the halves pack into blocks with other leaves.
+        auto splits = [&](uint32_t binary) {
+            return !tree_.opens(binary) && !node(binary).isLeaf() &&
+                   tree_.ranges[binary].count > kLeafMerge;
+        };
+        while (count < kWideLanes) {
+            int best = -1;
+            for (int s = 0; s < count; ++s) {
+                if (splits(slots[s]) &&
+                    (best < 0 || area(node(slots[s])) > area(node(slots[best])))) {
+                    best = s;
+                }
+            }
+            if (best < 0) {
+                break;
+            }
+            const uint32_t split = slots[best];
+            slots[best] = node(split).index;
+            areas[best] = -1.0f;
+            add(node(split).index + 1);
+        }
 
         BvhWideNode wide{};
         for (int c = 0; c < kWideLanes; ++c) {
@@ -165,54 +203,63 @@ private:
                 wide.lower[a][s] = b.lower[a];
                 wide.upper[a][s] = b.upper[a];
             }
-            if (tree_.opens(slots[s])) {
-                if (deferBelow_ > 0 && tree_.ranges[slots[s]].count <= deferBelow_) {
-                    deferred_->push_back({slots[s], p.wide, s, p.depth + 1});
-                    continue;
-                }
-                const auto child = static_cast<uint32_t>(part_.nodes.size());
-                part_.nodes.emplace_back();
-                wide.child[s] = child;
-                stack.push_back({slots[s], child, p.depth + 1});
-            } else {
-                const uint32_t first = part_.firstBlock + part_.blockCount;
-                const uint32_t blocks = addBlocks(tree_.ranges[slots[s]]);
-                if (blocks > kWideMaxLeafBlocks || first + blocks > kWideFirstBlockMask) {
-                    part_.overflow = true;
-                    continue;
-                }
-                wide.child[s] = kWideLeafFlag | (blocks - 1) << kWideBlockShift | first;
+            if (!tree_.opens(slots[s])) {
+                part_.leaves.push_back({tree_.ranges[slots[s]], p.wide, static_cast<uint32_t>(s)});
+                continue;
             }
+            if (deferBelow_ > 0 && tree_.ranges[slots[s]].count <= deferBelow_) {
+                deferred_->push_back({slots[s], p.wide, s, p.depth + 1});
+                continue;
+            }
+            const auto child = static_cast<uint32_t>(part_.nodes.size());
+            part_.nodes.emplace_back();
+            wide.child[s] = child;
+            stack.push_back({slots[s], child, p.depth + 1});
         }
         part_.nodes[p.wide] = wide;
     }
 
-    // Appends the blocks of a leaf; spare lanes repeat the block's first triangle.
-    uint32_t addBlocks(const Range& r) {
-        uint32_t blocks = 0;
-        for (uint32_t first = r.first; first < r.first + r.count; first += kWideLanes) {
-            const uint32_t at = part_.firstBlock + part_.blockCount;
-            BvhTriangleBlock& block = part_.blocks[at];
-            for (int lane = 0; lane < kWideLanes; ++lane) {
-                const uint32_t i = first + static_cast<uint32_t>(lane) < r.first + r.count
-                                       ? first + static_cast<uint32_t>(lane)
-                                       : first;
-                const Triangle& t = tree_.scene.triangles[tree_.leafScene[i]];
-                const glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
-                for (int k = 0; k < 3; ++k) {
-                    for (int a = 0; a < 3; ++a) {
-                        block.vertex[k][a][lane] = (*v[k])[a];
-                    }
-                }
-                block.sceneIndex[lane] = tree_.leafScene[i];
-                if (i == first + static_cast<uint32_t>(lane)) {
-                    tree_.slotOf[i] = at * kWideLanes + static_cast<uint32_t>(lane);
+    // Places the part's leaves in its blocks, largest first (in the order made on equal sizes):
+    // a leaf of one block in the block with the least room that takes it (the latest made of
+    // those), a longer one in new blocks; points their child references at the part's blocks.
+    void packLeaves() {
+        std::stable_sort(part_.leaves.begin(), part_.leaves.end(),
+                         [](const LeafPlacement& a, const LeafPlacement& b) {
+                             return a.triangles.count > b.triangles.count;
+                         });
+        std::vector<uint32_t> withRoom[kWideLanes]; // [n]: blocks with n free lanes
+        for (LeafPlacement& leaf : part_.leaves) {
+            const uint32_t count = leaf.triangles.count;
+            const uint32_t blocks = (count + kWideLanes - 1) / kWideLanes;
+            if (blocks > kWideMaxLeafBlocks) {
+                part_.overflow = true;
+                continue;
+            }
+            auto block = static_cast<uint32_t>(part_.lanesUsed.size());
+            for (uint32_t room = count; blocks == 1 && room < kWideLanes; ++room) {
+                if (!withRoom[room].empty()) {
+                    block = withRoom[room].back();
+                    withRoom[room].pop_back();
+                    break;
                 }
             }
-            ++part_.blockCount;
-            ++blocks;
+            if (block == part_.lanesUsed.size()) {
+                part_.lanesUsed.resize(block + blocks, 0);
+            }
+            const uint32_t last = block + blocks - 1;
+            leaf.block = block;
+            leaf.lane = part_.lanesUsed[block];
+            for (uint32_t b = block; b < last; ++b) {
+                part_.lanesUsed[b] = kWideLanes;
+            }
+            part_.lanesUsed[last] =
+                static_cast<uint8_t>(leaf.lane + count - (blocks - 1) * kWideLanes);
+            if (part_.lanesUsed[last] < kWideLanes) {
+                withRoom[kWideLanes - part_.lanesUsed[last]].push_back(last);
+            }
+            part_.nodes[leaf.node].child[leaf.slot] =
+                kWideLeafFlag | (blocks - 1) << kWideBlockShift | block;
         }
-        return blocks;
     }
 
     BinaryTree& tree_;
@@ -221,14 +268,49 @@ private:
     std::vector<PendingPart>* deferred_;
 };
 
-// Moves a part's inner child references by its offset in the whole node array (its leaves
-// already index the whole block array).
+// Moves a part's child references by its offsets in the whole arrays: inner children by
+// nodeOffset, leaves by the part's first block.
 void relocate(WidePart& part, uint32_t nodeOffset) {
     for (BvhWideNode& n : part.nodes) {
         for (uint32_t& c : n.child) {
-            if (c != kWideEmpty && (c & kWideLeafFlag) == 0) {
-                c += nodeOffset;
+            if (c == kWideEmpty) {
+                continue;
             }
+            c += (c & kWideLeafFlag) != 0 ? part.firstBlock : nodeOffset;
+        }
+    }
+}
+
+// Writes a placed part's leaves into its blocks of `blocks` (the BVH's array), their spare
+// lanes, and the lanes of its leaf triangles into tree.slotOf.
+void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* blocks) {
+    for (const LeafPlacement& leaf : part.leaves) {
+        const uint32_t firstSlot = (part.firstBlock + leaf.block) * kWideLanes + leaf.lane;
+        for (uint32_t j = 0; j < leaf.triangles.count; ++j) {
+            const uint32_t i = leaf.triangles.first + j;
+            const uint32_t slot = firstSlot + j;
+            BvhTriangleBlock& block = blocks[slot / kWideLanes];
+            const uint32_t lane = slot % kWideLanes;
+            const Triangle& t = tree.scene.triangles[tree.leafScene[i]];
+            const glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
+            for (int k = 0; k < 3; ++k) {
+                for (int a = 0; a < 3; ++a) {
+                    block.vertex[k][a][lane] = (*v[k])[a];
+                }
+            }
+            block.sceneIndex[lane] = tree.leafScene[i];
+            tree.slotOf[i] = slot;
+        }
+    }
+    for (std::size_t b = 0; b < part.lanesUsed.size(); ++b) {
+        BvhTriangleBlock& block = blocks[part.firstBlock + b];
+        for (uint32_t lane = part.lanesUsed[b]; lane < kWideLanes; ++lane) {
+            for (int k = 0; k < 3; ++k) {
+                for (int a = 0; a < 3; ++a) {
+                    block.vertex[k][a][lane] = block.vertex[k][a][0];
+                }
+            }
+            block.sceneIndex[lane] = block.sceneIndex[0];
         }
     }
 }
@@ -243,65 +325,54 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
         return false;
     }
     BinaryTree tree(bvh, scene, leafScene);
-    const uint32_t totalBlocks = tree.blocksUnder[0];
-    if (totalBlocks > kWideFirstBlockMask) {
-        return false;
-    }
-    // Every block is written below (value-initialised first by resize): allocated, advised huge
-    // pages (huge_pages.h), then first touched.
-    bvh.triangleBlocks.reserve(totalBlocks);
-    adviseHugePages(bvh.triangleBlocks.data(), totalBlocks * sizeof(BvhTriangleBlock));
-    bvh.triangleBlocks.resize(totalBlocks);
     WidePart top;
-    top.blocks = bvh.triangleBlocks.data();
     std::vector<PendingPart> pending;
     const uint32_t deferBelow =
         std::max(kMinPartTriangles, static_cast<uint32_t>(leafScene.size() / 128));
     Collapser(tree, top, deferBelow, &pending).run(0, 1);
-
-    // Each part's blocks follow the top's and the parts' before it.
     std::vector<WidePart> parts(pending.size());
-    uint32_t blockAt = top.blockCount;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        parts[i].blocks = bvh.triangleBlocks.data();
-        parts[i].firstBlock = blockAt;
-        blockAt += tree.blocksUnder[pending[i].binary];
-    }
     team.forEach(parts.size(), [&](std::size_t i) {
         parts[i].depth = pending[i].depth;
         Collapser(tree, parts[i], 0, nullptr).run(pending[i].binary, pending[i].depth);
     });
 
-    // Offsets, then every part's nodes in place.
+    // Offsets: the top's nodes and blocks first, then each part's.
     std::vector<uint32_t> nodeAt(parts.size());
     std::size_t nodes = top.nodes.size();
+    std::size_t blocks = top.lanesUsed.size();
     int depth = top.depth;
     bool overflow = top.overflow;
     for (std::size_t i = 0; i < parts.size(); ++i) {
         nodeAt[i] = static_cast<uint32_t>(nodes);
         nodes += parts[i].nodes.size();
+        parts[i].firstBlock = static_cast<uint32_t>(blocks); // checked below
+        blocks += parts[i].lanesUsed.size();
         depth = std::max(depth, parts[i].depth);
         overflow = overflow || parts[i].overflow;
         top.nodes[pending[i].parent].child[pending[i].lane] = nodeAt[i];
     }
-    if (overflow || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
-        std::vector<BvhTriangleBlock>().swap(bvh.triangleBlocks);
+    if (overflow || blocks > kWideFirstBlockMask || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
         return false;
     }
-    // Allocated, advised huge pages, then first touched (huge_pages.h).
+    // Every node and block is written below (value-initialised first by resize): allocated,
+    // advised huge pages (huge_pages.h), then first touched.
     bvh.wideNodes.reserve(nodes);
     adviseHugePages(bvh.wideNodes.data(), nodes * sizeof(BvhWideNode));
     bvh.wideNodes.resize(nodes);
+    bvh.triangleBlocks.reserve(blocks);
+    adviseHugePages(bvh.triangleBlocks.data(), blocks * sizeof(BvhTriangleBlock));
+    bvh.triangleBlocks.resize(blocks);
     std::copy(top.nodes.begin(), top.nodes.end(), bvh.wideNodes.begin());
+    writeBlocks(top, tree, bvh.triangleBlocks.data());
     team.forEach(parts.size(), [&](std::size_t i) {
         relocate(parts[i], nodeAt[i]);
         std::copy(parts[i].nodes.begin(), parts[i].nodes.end(), bvh.wideNodes.begin() + nodeAt[i]);
+        writeBlocks(parts[i], tree, bvh.triangleBlocks.data());
         parts[i] = WidePart{};
     });
 
     // Points the binary leaves at the blocks' lanes. A binary leaf lies inside one wide leaf,
-    // whose blocks hold its triangles in leaf order with padding only after the last one, so
-    // its triangles stay contiguous slots.
+    // whose triangles are consecutive lanes in leaf order, so its triangles stay consecutive.
     for (BvhNode& node : bvh.nodes) {
         if (node.isLeaf()) {
             node.index = tree.slotOf[node.index];

@@ -262,6 +262,11 @@ RAYLAB_AVX2 bool collectAvx2(const Bvh& bvh, const RayFrustum& frustum, FrustumC
             }
             const uint32_t first = firstBlock(ref);
             for (uint32_t b = first; b < first + blockCount(ref); ++b) {
+                // Leaves share blocks (bvh_collapse.cpp): a block already collected is not
+                // collected again.
+                if (std::find(out.block, out.block + out.count, b) != out.block + out.count) {
+                    continue;
+                }
                 const BvhTriangleBlock& block = bvh.triangleBlocks[b];
                 for (unsigned t = trianglesInside(block, planes); t != 0; t &= t - 1) {
                     const int lane = __builtin_ctz(t);
