@@ -67,10 +67,13 @@ struct Bvh {
 };
 
 struct BvhBuildOptions {
-    int maxLeafSize = 4; // triangles per leaf, at most
-    int binCount = 16;   // SAH bins per axis
-    int threads = 0;     // 0 = every hardware thread; the result does not depend on it
-    bool simd = true;    // also build the 8-wide form when the CPU has AVX2
+    // Triangles per binary leaf, at most. When the 8-wide form is built and the binary nodes are
+    // not kept, nodes of at most 8 references become leaves unsplit (one wide leaf holds them
+    // anyway), so binary leaves may hold up to max(8, maxLeafSize).
+    int maxLeafSize = 4;
+    int binCount = 16; // SAH bins per axis
+    int threads = 0;   // 0 = every hardware thread; the result does not depend on it
+    bool simd = true;  // also build the 8-wide form when the CPU has AVX2
     // Keep the binary nodes beside the 8-wide form (tests of the binary tree itself). Without
     // them the 8-wide form is the whole BVH: the binary nodes cost 37 bytes a triangle (dragon).
     // A BVH without the 8-wide form always keeps them.

@@ -217,7 +217,11 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     presplitRecords(scene, options.presplitBudget, slack, team, records);
     BuildTask root;
     root.bounds = boundsOnTeam(records, team);
+    const bool wide = options.simd && bvhSimdSupported();
     BuildContext context;
+    if (wide && !options.keepBinaryNodes) {
+        context.leafAtMost = kLeafMerge; // the binary nodes are dropped after the collapse
+    }
     if (options.spatialSplitBudget > 0.0f) {
         context.scene = &scene;
         context.slack = slack;
@@ -256,7 +260,6 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         subtrees[i].nodes.resize(1);
         builder.buildSubtree(subtrees[i], local);
     });
-    const bool wide = options.simd && bvhSimdSupported();
     std::vector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices);
     subtrees = {};

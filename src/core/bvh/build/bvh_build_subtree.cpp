@@ -36,7 +36,7 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
                                    BuildTeam* team, BinSet& scratch,
                                    std::vector<BinSet>& chunkBins) const {
     SplitChoice choice;
-    if (count <= 1) {
+    if (count <= 1 || count <= context_.leafAtMost) {
         return choice;
     }
     const bool mustSplit = count > static_cast<uint32_t>(maxLeaf_);

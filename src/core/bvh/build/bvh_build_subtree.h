@@ -36,6 +36,10 @@ struct BuildContext {
     float slack = 0.0f;           // splitBox's (bvh_clip.h)
     float minOverlapArea = 0.0f;  // spatial splits only where object splits overlap more
     float minNodeOverlap = 0.0f;  // ... and more than this fraction of the node's own surface
+    // Nodes of at most this many references become leaves straight away, unbinned, whatever
+    // BvhBuildOptions::maxLeafSize says (0: none): the collapse makes every such binary subtree
+    // one wide leaf anyway (kLeafMerge, bvh_collapse.h).
+    uint32_t leafAtMost = 0;
 };
 
 // A built subtree: nodes[0] is its root; leaf node i holds records [index, index + count).

@@ -30,7 +30,6 @@ namespace raylab {
 
 namespace {
 
-constexpr uint32_t kLeafMerge = 8;
 constexpr uint32_t kMinPartTriangles = 2048; // smallest wide subtree made as a parallel task
 
 struct Range {

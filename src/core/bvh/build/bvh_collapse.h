@@ -13,6 +13,11 @@ namespace raylab {
 // scalar path then runs) for a tree that would need more.
 inline constexpr int kWideStackSize = 512;
 
+// A binary subtree of at most this many triangles becomes one wide leaf (one block of 8 lanes).
+// The binary builder makes such nodes leaves straight away when only the wide form is kept
+// (bvh_build_subtree.h): splitting them would only reorder the lanes of that leaf.
+inline constexpr uint32_t kLeafMerge = 8;
+
 // Fills bvh.wideNodes and bvh.triangleBlocks from bvh.nodes, whose leaves hold leaf triangles
 // [index, index + count), leaf triangle i being scene.triangles[leafScene[i]]; then points the
 // binary leaves at the blocks' lanes (see Bvh::triangles) and returns true. Returns false, with
