@@ -230,7 +230,7 @@ private:
         for (LeafPlacement& leaf : part_.leaves) {
             const uint32_t count = leaf.triangles.count;
             const uint32_t blocks = (count + kWideLanes - 1) / kWideLanes;
-            if (blocks > kWideMaxLeafBlocks) {
+            if (blocks == 0 || blocks > kWideMaxLeafBlocks) { // no child reference holds it
                 part_.overflow = true;
                 continue;
             }
