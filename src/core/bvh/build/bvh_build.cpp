@@ -117,7 +117,7 @@ glm::vec3 widestOnTeam(const RecordVector& records, BuildTeam& team) {
 // walls and columns). In a scene whose every triangle spans at most one spatial bin of the
 // whole scene on every axis (a scanned surface, evenly tessellated: the bunny's and the
 // dragon's widest reach a 25th) they won at few nodes for about 1% of those nodes' cost, and
-// the bunny and the dragon traced as fast without them, built 20-28% faster (PERFORMANCE.md).
+// the bunny and the dragon traced as fast without them and built 16-30% faster (PERFORMANCE.md).
 bool hasTriangleWiderThanASpatialBin(const glm::vec3& widest, const Aabb& scene) {
     const glm::vec3 extent = scene.extent();
     for (int a = 0; a < 3; ++a) {
