@@ -32,15 +32,17 @@ constexpr std::size_t kMinTaskSize = 4096;  // smallest subtree worth a parallel
 constexpr std::size_t kBoundsChunk = 65536; // records per chunk of the root's bounds
 
 // One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
-// largest |coordinate| of a valid vertex. Chunk c writes its records from c * kBoundsChunk on,
+// largest |coordinate| of a valid vertex and the widest valid triangle on each axis (upper -
+// lower, world units). Chunk c writes its records from c * kBoundsChunk on,
 // in the array itself; only where triangles were skipped do later chunks move down after.
 RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipped,
-                         float& magnitude) {
+                         float& magnitude, glm::vec3& widest) {
     const std::size_t triangles = scene.triangles.size();
     const std::size_t chunks = (triangles + kBoundsChunk - 1) / kBoundsChunk;
     RecordVector records(triangles);
     std::vector<std::size_t> made(chunks, 0);
     std::vector<float> largest(chunks, 0.0f);
+    std::vector<glm::vec3> wide(chunks, glm::vec3{0.0f});
     team.forEach(chunks, [&](std::size_t c) {
         PrimRecord* out = records.data() + c * kBoundsChunk;
         std::size_t n = 0;
@@ -55,6 +57,7 @@ RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipp
             largest[c] =
                 std::max({largest[c], glm::abs(lower).x, glm::abs(lower).y, glm::abs(lower).z,
                           glm::abs(upper).x, glm::abs(upper).y, glm::abs(upper).z});
+            wide[c] = glm::max(wide[c], upper - lower);
             out[n++] = {lower, static_cast<uint32_t>(i), upper, 0.0f};
         }
         made[c] = n;
@@ -67,6 +70,7 @@ RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipp
         }
         at += made[c];
         magnitude = std::max(magnitude, largest[c]);
+        widest = glm::max(widest, wide[c]);
     }
     skipped = triangles - at;
     records.resize(at);
@@ -85,30 +89,6 @@ RecordBounds boundsOnTeam(const RecordVector& records, BuildTeam& team) {
     RecordBounds all;
     for (const RecordBounds& p : parts) {
         all.merge(p);
-    }
-    return all;
-}
-
-// The widest record on each axis (upper - lower, world units).
-glm::vec3 widestOnTeam(const RecordVector& records, BuildTeam& team) {
-    const std::size_t chunks = (records.size() + kBoundsChunk - 1) / kBoundsChunk;
-    std::vector<glm::vec3> parts(chunks);
-    team.forEach(chunks, [&](std::size_t i) {
-        const std::size_t first = i * kBoundsChunk;
-        const std::size_t last = std::min(records.size(), first + kBoundsChunk);
-        __m128 widest = _mm_setzero_ps();
-        for (std::size_t k = first; k < last; ++k) {
-            const PrimRecord& r = records[k];
-            widest =
-                _mm_max_ps(widest, _mm_sub_ps(_mm_loadu_ps(&r.upper.x), _mm_loadu_ps(&r.lower.x)));
-        }
-        alignas(16) float lanes[4];
-        _mm_store_ps(lanes, widest);
-        parts[i] = {lanes[0], lanes[1], lanes[2]};
-    });
-    glm::vec3 all{0.0f};
-    for (const glm::vec3& p : parts) {
-        all = glm::max(all, p);
     }
     return all;
 }
@@ -243,8 +223,10 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     // A scene smaller than one subtree task gains nothing from more threads than one.
     BuildTeam team(scene.triangles.size() < 2 * kMinTaskSize ? 1
                                                              : resolveThreadCount(options.threads));
-    float magnitude = 0.0f; // largest |coordinate| of a valid vertex
-    RecordVector records = makeRecords(scene, team, bvh.skippedTriangles, magnitude);
+    float magnitude = 0.0f;         // largest |coordinate| of a valid vertex
+    glm::vec3 widestTriangle{0.0f}; // on each axis, before pre-splitting
+    RecordVector records =
+        makeRecords(scene, team, bvh.skippedTriangles, magnitude, widestTriangle);
     if (records.empty()) {
         return bvh;
     }
@@ -255,7 +237,6 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     const float slack = std::ldexp(std::max(magnitude, 1e-30f), -21);
     const float pad = std::ldexp(std::max(magnitude, 1e-30f), -19);
     bvh.boxPad = pad;
-    const glm::vec3 widestTriangle = widestOnTeam(records, team); // before pre-splitting
     presplitRecords(scene, options.presplitBudget, slack, team, records);
     BuildTask root;
     root.bounds = boundsOnTeam(records, team);
