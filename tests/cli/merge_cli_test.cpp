@@ -8,8 +8,8 @@
 #include "io/settings_json.h"
 #include "run_program.h"
 #include "temp_dir_test.h"
-#include "test_assets.h"
 
+#include <fstream>
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
@@ -133,8 +133,10 @@ TEST_F(MergeCli, PartsThatDoNotFitAreRefusedByName) {
     renderOk(with(
         flags, {"--samples", "2:4", "--light-pos", "0,0.4,-0.7", "--partial", path("moved.exr")}));
     renderOk(with(flags, {"--samples", "2:4", "--width", "80", "--partial", path("narrow.exr")}));
-    renderOk(with(flags, {"--samples", "2:4", "--partial", path("bunny.exr"),
-                          test::asset("bunny/bun_zipper_res2.ply").string()}));
+    // Another scene, written here so that the test needs no shared asset.
+    std::ofstream(path("triangle.obj")) << "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n";
+    renderOk(
+        with(flags, {"--samples", "2:4", "--partial", path("other.exr"), path("triangle.obj")}));
     renderOk(with(flags, {"-o", path("plain.exr")}));
     const std::string out = path("out.png");
     expectRefused({path("a.exr"), path("c.exr"), "-o", out},
@@ -146,7 +148,7 @@ TEST_F(MergeCli, PartsThatDoNotFitAreRefusedByName) {
                   "samples 2:4 of pixels 0,40 to 96,72 are missing");
     expectRefused({path("a.exr"), path("moved.exr"), "-o", out}, "other settings");
     expectRefused({path("a.exr"), path("narrow.exr"), "-o", out}, "80x72 picture");
-    expectRefused({path("a.exr"), path("bunny.exr"), "-o", out}, "another scene");
+    expectRefused({path("a.exr"), path("other.exr"), "-o", out}, "another scene");
     expectRefused({path("a.exr"), path("plain.exr"), "-o", out}, "not a raylab partial");
     expectRefused({path("a.exr"), path("missing.exr"), "-o", out}, "missing.exr");
     // Re-rendering only the missing range completes the picture.
