@@ -5,8 +5,10 @@
 #include "accel_check.h"
 #include "accel_scenes.h"
 #include "core/bvh/build/bvh_build_object_split.h"
+#include "core/bvh/build/bvh_spatial_split.h"
 #include "core/bvh/bvh_packet.h"
 
+#include <algorithm>
 #include <cstring>
 #include <gtest/gtest.h>
 #include <random>
@@ -92,6 +94,52 @@ TEST(BvhSpatialSplit, WithPresplittingToo) {
     both.spatialSplitBudget = 1.0f;
     const Bvh bvh = buildBvh(scene, both);
     EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(6000, 47)), 1000);
+}
+
+// Spatial bins along one axis: a triangle across the node is cut at every plane of that axis
+// it crosses; each bin holds the box of the part of the triangle in its slab, and nothing is
+// binned along the other axes. The triangle (0,0,0), (1,0.5,0), (0,1,0.25) spans y in
+// [x/2, 1 - x/2] at x, and x in [0, 2 min(y, 1 - y)] at y.
+TEST(BvhSpatialSplit, BinsCutATriangleAtEveryPlaneOfTheirAxis) {
+    Scene scene;
+    scene.triangles.push_back({{0.0f, 0.0f, 0.0f}, {1.0f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.25f}, 0});
+    const PrimRecord record{{0.0f, 0.0f, 0.0f}, 0, {1.0f, 1.0f, 0.25f}, 0.0f};
+    const Aabb bounds{{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 0.25f}};
+    constexpr float slack = 1e-6f, tolerance = 1e-5f;
+    const float width = 1.0f / static_cast<float>(kSpatialBins);
+    for (const int axis : {0, 1}) {
+        SCOPED_TRACE(axis);
+        SpatialBins bins;
+        binSpatial(scene, &record, &record + 1, bounds, axis, slack, bins);
+        EXPECT_EQ(bins.entering[0], 1u);
+        EXPECT_EQ(bins.leaving[kSpatialBins - 1], 1u);
+        uint32_t entering = 0, leaving = 0;
+        for (int b = 0; b < kSpatialBins; ++b) {
+            entering += bins.entering[b];
+            leaving += bins.leaving[b];
+            const Aabb part = bins.box[b].toAabb();
+            ASSERT_FALSE(part.empty()) << b;
+            const float low = static_cast<float>(b) * width, high = low + width;
+            EXPECT_NEAR(part.lower[axis], low, tolerance) << b;
+            EXPECT_NEAR(part.upper[axis], high, tolerance) << b;
+            if (axis == 0) { // y over the slab: from low / 2 up to 1 - low / 2
+                EXPECT_NEAR(part.lower.y, 0.5f * low, tolerance) << b;
+                EXPECT_NEAR(part.upper.y, 1.0f - 0.5f * low, tolerance) << b;
+            } else { // x over the slab: from 0 up to 2 min(y, 1 - y) at its widest
+                const float y = std::clamp(0.5f, low, high);
+                const float widest = 2.0f * std::min(y, 1.0f - y);
+                EXPECT_NEAR(part.lower.x, 0.0f, tolerance) << b;
+                EXPECT_NEAR(part.upper.x, widest, tolerance) << b;
+            }
+        }
+        EXPECT_EQ(entering, 1u);
+        EXPECT_EQ(leaving, 1u);
+        const SpatialSplit split = bestSpatialSplit(bins, bounds, axis);
+        EXPECT_EQ(split.axis, axis);
+        EXPECT_EQ(split.references, 2u);
+        EXPECT_GT(split.position, 0.0f);
+        EXPECT_LT(split.position, 1.0f);
+    }
 }
 
 // binOverreach, the test for trying spatial splits at all: about 0 where references are small

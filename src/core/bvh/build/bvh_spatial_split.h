@@ -26,23 +26,23 @@ struct SpatialSplit {
     uint32_t references = 0; // N(left) + N(right) estimated by the bins
 };
 
-// The spatial bins of some references on the three axes: per bin, the box of the parts of the
+// The spatial bins of some references along one axis: per bin, the box of the parts of the
 // triangles inside it and how many references start and end in it. min, max and sums are
 // exact, so bins of parts of a node merged in a fixed order equal the bins of the whole.
 struct SpatialBins {
-    SseBox box[3][kSpatialBins];
-    uint32_t entering[3][kSpatialBins] = {};
-    uint32_t leaving[3][kSpatialBins] = {};
+    SseBox box[kSpatialBins];
+    uint32_t entering[kSpatialBins] = {};
+    uint32_t leaving[kSpatialBins] = {};
     void merge(const SpatialBins& other);
 };
 
 // Adds refs [first, last) (whose boxes lie in `bounds`, the node's) to `bins`, over
-// kSpatialBins planes per axis. `slack` is splitBox's (bvh_clip.h).
+// kSpatialBins planes across `axis`. `slack` is splitBox's (bvh_clip.h).
 void binSpatial(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
-                const Aabb& bounds, float slack, SpatialBins& bins);
+                const Aabb& bounds, int axis, float slack, SpatialBins& bins);
 
-// The best spatial split of a node with these bins and bounds.
-SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds);
+// The best spatial split across `axis` of a node with these bins and bounds.
+SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int axis);
 
 // Appends refs [first, last) to left and right by split's plane, splitting the references that
 // cross it, in the order of the input, and adds what it appends to the sides' bounds.
