@@ -1,6 +1,33 @@
 #include "bvh/build/bvh_build_team.h"
 
+#include <chrono>
+#include <immintrin.h>
+
 namespace raylab {
+
+namespace {
+
+// How long a thread between loops spins before it sleeps: the build's top runs loops back to
+// back with a few microseconds of one thread's work between them, and a sleeping thread takes
+// tens of microseconds to wake (PERFORMANCE.md, "The BVH build").
+constexpr auto kSpin = std::chrono::microseconds(100);
+
+} // namespace
+
+template <typename Done> bool BuildTeam::spinUntil(const Done& done) {
+    const auto until = std::chrono::steady_clock::now() + kSpin;
+    for (;;) {
+        for (int i = 0; i < 64; ++i) {
+            if (done()) {
+                return true;
+            }
+            _mm_pause();
+        }
+        if (std::chrono::steady_clock::now() > until) {
+            return done();
+        }
+    }
+}
 
 BuildTeam::BuildTeam(int threads) {
     for (int i = 1; i < threads; ++i) {
@@ -39,6 +66,7 @@ void BuildTeam::forEach(std::size_t count, const std::function<void(std::size_t)
     }
     wake_.notify_all();
     work();
+    spinUntil([this, count] { return done_.load(std::memory_order_acquire) == count; });
     std::unique_lock lock(mutex_);
     finished_.wait(lock, [this] { return done_ == count_; });
     job_ = nullptr;
@@ -61,6 +89,10 @@ void BuildTeam::work() {
 void BuildTeam::helperLoop() {
     unsigned long seen = 0;
     for (;;) {
+        spinUntil([&] {
+            return stop_.load(std::memory_order_acquire) ||
+                   generation_.load(std::memory_order_acquire) != seen;
+        });
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stop_ || generation_ != seen; });

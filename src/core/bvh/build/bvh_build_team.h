@@ -4,6 +4,7 @@
 // compute may depend on which thread ran which index: that is how the build stays the same
 // whatever the thread count.
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
@@ -31,6 +32,9 @@ public:
 private:
     void helperLoop();
     void work(); // takes indices of the current loop until none is left
+    // Spins for a short while (kSpin, bvh_build_team.cpp) until done() holds; false if it still
+    // does not (the caller then sleeps on a condition variable as before).
+    template <typename Done> static bool spinUntil(const Done& done);
 
     std::mutex mutex_;
     std::condition_variable wake_;     // a new loop, or stop
@@ -38,9 +42,10 @@ private:
     const std::function<void(std::size_t)>* job_ = nullptr;
     std::size_t count_ = 0;
     std::size_t next_ = 0; // next index to hand out
-    std::size_t done_ = 0; // indices finished
-    unsigned long generation_ = 0;
-    bool stop_ = false;
+    // Written under mutex_; atomic so that a waiting thread may spin on them without it.
+    std::atomic<std::size_t> done_ = 0; // indices finished
+    std::atomic<unsigned long> generation_ = 0;
+    std::atomic<bool> stop_ = false;
     std::vector<std::thread> helpers_;
 };
 
