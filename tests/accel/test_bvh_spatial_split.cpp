@@ -55,15 +55,23 @@ TEST(BvhSpatialSplit, SplitsLargeTrianglesWithinTheBudget) {
 }
 
 // Where every triangle spans at most 1/16 of the scene on every axis (the room's small
-// triangles alone, like a scanned mesh), spatial splits are not tried (bvh_build.cpp); the
-// room's wide quads bring them back (above), and the answers are brute force's either way.
+// triangles alone, like a scanned mesh), neither spatial splits nor pre-splits are tried
+// (bvh_build.cpp); the room's wide quads bring them back (above), and the answers are brute
+// force's either way.
 TEST(BvhSpatialSplit, NoneWhereEveryTriangleIsNarrowerThanASpatialBin) {
+    BvhBuildOptions both;
+    both.presplitBudget = 2.0f;
+    both.spatialSplitBudget = 0.3f;
     for (const Scene& scene :
          {makeTriangleSoup(20000, 0.05f, 46), makeClosedSphere(90, 120, 1.0f, 0.02f, 47)}) {
-        const Bvh bvh = buildBvh(scene, spatialOnly(0.3f));
+        const Bvh bvh = buildBvh(scene, both);
         EXPECT_EQ(bvh.leafReferences, scene.triangles.size() - bvh.skippedTriangles);
         EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(4000, 48)), 100);
     }
+    BvhBuildOptions presplitOnly = both;
+    presplitOnly.spatialSplitBudget = 0.0f;
+    const Scene room = makeRoom(3000, 49);
+    EXPECT_GT(buildBvh(room, presplitOnly).leafReferences, room.triangles.size());
 }
 
 TEST(BvhSpatialSplit, MatchesBruteForceOnEveryPath) {

@@ -30,23 +30,27 @@ namespace {
 
 constexpr std::size_t kMinTaskSize = 4096;  // smallest subtree worth a parallel task
 constexpr std::size_t kBoundsChunk = 65536; // records per chunk of the root's bounds
+constexpr std::size_t kRecordChunk = 16384; // triangles per chunk of makeRecords
 
 // One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
-// largest |coordinate| of a valid vertex and the widest valid triangle on each axis (upper -
-// lower, world units). Chunk c writes its records from c * kBoundsChunk on,
-// in the array itself; only where triangles were skipped do later chunks move down after.
-RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipped,
-                         float& magnitude, glm::vec3& widest) {
+// box of the valid triangles and the widest of them on each axis (upper - lower, world units).
+// Chunk c writes its records from c * kRecordChunk on, in the array itself; only where
+// triangles were skipped do later chunks move down after.
+RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipped, Aabb& box,
+                         glm::vec3& widest) {
     const std::size_t triangles = scene.triangles.size();
-    const std::size_t chunks = (triangles + kBoundsChunk - 1) / kBoundsChunk;
+    const std::size_t chunks = (triangles + kRecordChunk - 1) / kRecordChunk;
     RecordVector records(triangles);
-    std::vector<std::size_t> made(chunks, 0);
-    std::vector<float> largest(chunks, 0.0f);
-    std::vector<glm::vec3> wide(chunks, glm::vec3{0.0f});
+    struct ChunkFacts { // one chunk's, accumulated in registers and stored once
+        std::size_t made = 0;
+        Aabb box;
+        glm::vec3 widest{0.0f};
+    };
+    std::vector<ChunkFacts> facts(chunks);
     team.forEach(chunks, [&](std::size_t c) {
-        PrimRecord* out = records.data() + c * kBoundsChunk;
-        std::size_t n = 0;
-        for (std::size_t i = c * kBoundsChunk; i < std::min(triangles, (c + 1) * kBoundsChunk);
+        PrimRecord* out = records.data() + c * kRecordChunk;
+        ChunkFacts f;
+        for (std::size_t i = c * kRecordChunk; i < std::min(triangles, (c + 1) * kRecordChunk);
              ++i) {
             const Triangle& t = scene.triangles[i];
             if (!isValidTriangle(t)) {
@@ -54,23 +58,22 @@ RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipp
             }
             const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
             const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
-            largest[c] =
-                std::max({largest[c], glm::abs(lower).x, glm::abs(lower).y, glm::abs(lower).z,
-                          glm::abs(upper).x, glm::abs(upper).y, glm::abs(upper).z});
-            wide[c] = glm::max(wide[c], upper - lower);
-            out[n++] = {lower, static_cast<uint32_t>(i), upper, 0.0f};
+            f.widest = glm::max(f.widest, upper - lower);
+            f.box.extend(lower);
+            f.box.extend(upper);
+            out[f.made++] = {lower, static_cast<uint32_t>(i), upper, 0.0f};
         }
-        made[c] = n;
+        facts[c] = f;
     });
     std::size_t at = 0;
     for (std::size_t c = 0; c < chunks; ++c) {
-        if (at != c * kBoundsChunk) {
-            std::copy_n(records.begin() + static_cast<std::ptrdiff_t>(c * kBoundsChunk), made[c],
-                        records.begin() + static_cast<std::ptrdiff_t>(at));
+        if (at != c * kRecordChunk) {
+            std::copy_n(records.begin() + static_cast<std::ptrdiff_t>(c * kRecordChunk),
+                        facts[c].made, records.begin() + static_cast<std::ptrdiff_t>(at));
         }
-        at += made[c];
-        magnitude = std::max(magnitude, largest[c]);
-        widest = glm::max(widest, wide[c]);
+        at += facts[c].made;
+        widest = glm::max(widest, facts[c].widest);
+        box.extend(facts[c].box);
     }
     skipped = triangles - at;
     records.resize(at);
@@ -93,11 +96,13 @@ RecordBounds boundsOnTeam(const RecordVector& records, BuildTeam& team) {
     return all;
 }
 
-// Spatial splits pay where triangles are large against the nodes they cross (Sponza's floors,
-// walls and columns). In a scene whose every triangle spans at most one spatial bin of the
-// whole scene on every axis (a scanned surface, evenly tessellated: the bunny's and the
-// dragon's widest reach a 25th) they won at few nodes for about 1% of those nodes' cost, and
-// the bunny and the dragon traced as fast without them and built 16-30% faster (PERFORMANCE.md).
+// Splitting triangles, before the build (pre-splits) or in it (spatial splits), pays where
+// triangles are large against the nodes they cross (Sponza's floors, walls and columns). In a
+// scene whose every triangle spans at most one spatial bin of the whole scene on every axis (a
+// scanned surface, evenly tessellated: the bunny's and the dragon's widest reach a 25th)
+// spatial splits won at few nodes for about 1% of those nodes' cost, pre-splitting gave the
+// dragon one reference for 28 ms, and the bunny and the dragon traced as fast without them and
+// built 16-30% faster (PERFORMANCE.md).
 bool hasTriangleWiderThanASpatialBin(const glm::vec3& widest, const Aabb& scene) {
     const glm::vec3 extent = scene.extent();
     for (int a = 0; a < 3; ++a) {
@@ -223,13 +228,15 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     // A scene smaller than one subtree task gains nothing from more threads than one.
     BuildTeam team(scene.triangles.size() < 2 * kMinTaskSize ? 1
                                                              : resolveThreadCount(options.threads));
-    float magnitude = 0.0f;         // largest |coordinate| of a valid vertex
+    Aabb sceneBox;                  // of the valid triangles
     glm::vec3 widestTriangle{0.0f}; // on each axis, before pre-splitting
-    RecordVector records =
-        makeRecords(scene, team, bvh.skippedTriangles, magnitude, widestTriangle);
+    RecordVector records = makeRecords(scene, team, bvh.skippedTriangles, sceneBox, widestTriangle);
     if (records.empty()) {
         return bvh;
     }
+    // The largest |coordinate| of a valid vertex.
+    const glm::vec3 farthest = glm::max(glm::abs(sceneBox.lower), glm::abs(sceneBox.upper));
+    const float magnitude = std::max({farthest.x, farthest.y, farthest.z});
 
     // Split boxes are widened by 2^-21 of the largest coordinate (several ulps of any vertex
     // coordinate), and node boxes by 2^-19 (far above the rounding of box tests and of the
@@ -237,7 +244,10 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     const float slack = std::ldexp(std::max(magnitude, 1e-30f), -21);
     const float pad = std::ldexp(std::max(magnitude, 1e-30f), -19);
     bvh.boxPad = pad;
-    presplitRecords(scene, options.presplitBudget, slack, team, records);
+    const bool splitsMayPay = hasTriangleWiderThanASpatialBin(widestTriangle, sceneBox);
+    if (splitsMayPay) {
+        presplitRecords(scene, options.presplitBudget, slack, team, records);
+    }
     BuildTask root;
     root.bounds = boundsOnTeam(records, team);
     const bool wide = options.simd && bvhSimdSupported();
@@ -245,8 +255,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     if (wide && !options.keepBinaryNodes) {
         context.leafAtMost = kLeafMerge; // the binary nodes are dropped after the collapse
     }
-    if (options.spatialSplitBudget > 0.0f &&
-        hasTriangleWiderThanASpatialBin(widestTriangle, root.bounds.box.toAabb())) {
+    if (options.spatialSplitBudget > 0.0f && splitsMayPay) {
         context.scene = &scene;
         context.slack = slack;
         context.minOverlapArea = options.spatialSplitOverlap * root.bounds.box.toAabb().area();
