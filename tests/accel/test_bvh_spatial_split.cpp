@@ -104,21 +104,18 @@ TEST(BvhSpatialSplit, WithPresplittingToo) {
     EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(6000, 47)), 1000);
 }
 
-// Spatial bins along one axis: a triangle across the node is cut at every plane of that axis
-// it crosses; each bin holds the box of the part of the triangle in its slab, and nothing is
-// binned along the other axes. The triangle (0,0,0), (1,0.5,0), (0,1,0.25) spans y in
-// [x/2, 1 - x/2] at x, and x in [0, 2 min(y, 1 - y)] at y.
-TEST(BvhSpatialSplit, BinsCutATriangleAtEveryPlaneOfTheirAxis) {
-    Scene scene;
-    scene.triangles.push_back({{0.0f, 0.0f, 0.0f}, {1.0f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.25f}, 0});
-    const PrimRecord record{{0.0f, 0.0f, 0.0f}, 0, {1.0f, 1.0f, 0.25f}, 0.0f};
+// Spatial bins along one axis: a reference across the node is cut at every plane of that axis
+// it crosses, each bin taking the part of its box in the bin's slab; a reference inside one bin
+// goes to it whole; nothing is binned along the other axes.
+TEST(BvhSpatialSplit, BinsCutAReferenceAtEveryPlaneOfTheirAxis) {
     const Aabb bounds{{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 0.25f}};
-    constexpr float slack = 1e-6f, tolerance = 1e-5f;
+    const PrimRecord across{{0.0f, 0.0f, 0.0f}, 0, {1.0f, 1.0f, 0.25f}, 0.0f};
+    const PrimRecord inside{{0.3f, 0.3f, 0.1f}, 1, {0.31f, 0.31f, 0.2f}, 0.0f}; // bin 4 of x, y
     const float width = 1.0f / static_cast<float>(kSpatialBins);
     for (const int axis : {0, 1}) {
         SCOPED_TRACE(axis);
         SpatialBins bins;
-        binSpatial(scene, &record, &record + 1, bounds, axis, slack, bins);
+        binSpatial(&across, &across + 1, bounds, axis, bins);
         EXPECT_EQ(bins.entering[0], 1u);
         EXPECT_EQ(bins.leaving[kSpatialBins - 1], 1u);
         uint32_t entering = 0, leaving = 0;
@@ -127,27 +124,49 @@ TEST(BvhSpatialSplit, BinsCutATriangleAtEveryPlaneOfTheirAxis) {
             leaving += bins.leaving[b];
             const Aabb part = bins.box[b].toAabb();
             ASSERT_FALSE(part.empty()) << b;
-            const float low = static_cast<float>(b) * width, high = low + width;
-            EXPECT_NEAR(part.lower[axis], low, tolerance) << b;
-            EXPECT_NEAR(part.upper[axis], high, tolerance) << b;
-            if (axis == 0) { // y over the slab: from low / 2 up to 1 - low / 2
-                EXPECT_NEAR(part.lower.y, 0.5f * low, tolerance) << b;
-                EXPECT_NEAR(part.upper.y, 1.0f - 0.5f * low, tolerance) << b;
-            } else { // x over the slab: from 0 up to 2 min(y, 1 - y) at its widest
-                const float y = std::clamp(0.5f, low, high);
-                const float widest = 2.0f * std::min(y, 1.0f - y);
-                EXPECT_NEAR(part.lower.x, 0.0f, tolerance) << b;
-                EXPECT_NEAR(part.upper.x, widest, tolerance) << b;
-            }
+            EXPECT_FLOAT_EQ(part.lower[axis], static_cast<float>(b) * width) << b;
+            EXPECT_FLOAT_EQ(part.upper[axis], static_cast<float>(b + 1) * width) << b;
+            const int other = 1 - axis;
+            EXPECT_EQ(part.lower[other], 0.0f) << b;
+            EXPECT_EQ(part.upper[other], 1.0f) << b;
+            EXPECT_EQ(part.lower.z, 0.0f) << b;
+            EXPECT_EQ(part.upper.z, 0.25f) << b;
         }
         EXPECT_EQ(entering, 1u);
         EXPECT_EQ(leaving, 1u);
-        const SpatialSplit split = bestSpatialSplit(bins, bounds, axis);
-        EXPECT_EQ(split.axis, axis);
-        EXPECT_EQ(split.references, 2u);
-        EXPECT_GT(split.position, 0.0f);
-        EXPECT_LT(split.position, 1.0f);
+
+        SpatialBins one;
+        binSpatial(&inside, &inside + 1, bounds, axis, one);
+        for (int b = 0; b < kSpatialBins; ++b) {
+            EXPECT_EQ(one.entering[b], b == 4 ? 1u : 0u) << b;
+            EXPECT_EQ(one.leaving[b], b == 4 ? 1u : 0u) << b;
+            EXPECT_EQ(one.box[b].toAabb().empty(), b != 4) << b;
+        }
+        const Aabb whole = one.box[4].toAabb();
+        EXPECT_EQ(whole.lower, inside.lower);
+        EXPECT_EQ(whole.upper, inside.upper);
     }
+}
+
+// Two clusters joined by a reference across the node: the best spatial split cuts between the
+// clusters, the long reference going to both sides.
+TEST(BvhSpatialSplit, BestSplitCutsBetweenClustersJoinedByALongReference) {
+    RecordVector records;
+    for (int i = 0; i < 10; ++i) {
+        records.push_back(
+            {{0.05f, 0.0f, 0.0f}, static_cast<uint32_t>(i), {0.1f, 0.05f, 0.05f}, 0.0f});
+        records.push_back(
+            {{0.9f, 0.0f, 0.0f}, static_cast<uint32_t>(10 + i), {0.95f, 0.05f, 0.05f}, 0.0f});
+    }
+    records.push_back({{0.0f, 0.0f, 0.0f}, 20, {1.0f, 0.05f, 0.05f}, 0.0f});
+    const Aabb bounds{{0.0f, 0.0f, 0.0f}, {1.0f, 0.05f, 0.05f}};
+    SpatialBins bins;
+    binSpatial(records.data(), records.data() + records.size(), bounds, 0, bins);
+    const SpatialSplit split = bestSpatialSplit(bins, bounds, 0);
+    EXPECT_EQ(split.axis, 0);
+    EXPECT_GT(split.position, 0.1f);
+    EXPECT_LT(split.position, 0.9f);
+    EXPECT_EQ(split.references, 22u);
 }
 
 // binOverreach, the test for trying spatial splits at all: about 0 where references are small

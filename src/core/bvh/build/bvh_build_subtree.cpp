@@ -86,8 +86,7 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     if (trySpatial) {
         std::vector<SpatialBins> parts(chunks);
         forEachChunk(chunks, team, [&](std::size_t i) {
-            binSpatial(*context_.scene, chunkBegin(i), chunkEnd(i), bounds, choice.object.axis,
-                       context_.slack, parts[i]);
+            binSpatial(chunkBegin(i), chunkEnd(i), bounds, choice.object.axis, parts[i]);
         });
         for (std::size_t i = 1; i < parts.size(); ++i) {
             parts[0].merge(parts[i]);

@@ -1,7 +1,6 @@
 #include "bvh/build/bvh_spatial_split.h"
 
 #include "bvh/build/bvh_build_clip.h"
-#include "bvh/build/bvh_clip.h"
 
 #include <algorithm>
 #include <array>
@@ -25,8 +24,8 @@ void SpatialBins::merge(const SpatialBins& other) {
     }
 }
 
-void binSpatial(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
-                const Aabb& bounds, int axis, float slack, SpatialBins& bins) {
+void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bounds, int axis,
+                SpatialBins& bins) {
     const float lower = bounds.lower[axis], extent = bounds.upper[axis] - bounds.lower[axis];
     if (!(extent > 0.0f)) {
         return; // a flat axis is never split
@@ -39,6 +38,17 @@ void binSpatial(const Scene& scene, const PrimRecord* first, const PrimRecord* l
         const float above = bin > 0.0f ? bin : 0.0f;
         return static_cast<int>(above < top ? above : top);
     };
+    // plane[i]: the plane between bins i - 1 and i, in lane `axis` of a register.
+    __m128 plane[kSpatialBins];
+    for (int i = 1; i < kSpatialBins; ++i) {
+        plane[i] = _mm_set1_ps(planeOf(lower, extent, i));
+    }
+    alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
+        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}};
+    const __m128 onAxis = _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks[axis]));
+    auto onPlane = [&](__m128 box, int i) {
+        return _mm_or_ps(_mm_and_ps(onAxis, plane[i]), _mm_andnot_ps(onAxis, box));
+    };
     for (const PrimRecord* r = first; r != last; ++r) {
         const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
         const int firstBin = binOf(r->lower[axis]), lastBin = binOf(r->upper[axis]);
@@ -48,22 +58,12 @@ void binSpatial(const Scene& scene, const PrimRecord* first, const PrimRecord* l
             bins.box[firstBin].extend(lo, hi);
             continue;
         }
-        // Clip the triangle bin by bin: the part left of each plane goes to that bin.
-        const Triangle& t = scene.triangles[r->sceneIndex];
-        SseBox rest;
-        rest.lower = lo;
-        rest.upper = hi;
-        for (int i = firstBin; i < lastBin && !isEmpty(rest); ++i) {
-            SseBox left, right;
-            splitBoxSse(t, rest, axis, planeOf(lower, extent, i + 1), slack, left, right);
-            if (!isEmpty(left)) {
-                bins.box[i].extend(left.lower, left.upper);
-            }
-            rest = right;
+        // The reference's box cut to each bin's slab.
+        bins.box[firstBin].extend(lo, onPlane(hi, firstBin + 1));
+        for (int i = firstBin + 1; i < lastBin; ++i) {
+            bins.box[i].extend(onPlane(lo, i), onPlane(hi, i + 1));
         }
-        if (!isEmpty(rest)) {
-            bins.box[lastBin].extend(rest.lower, rest.upper);
-        }
+        bins.box[lastBin].extend(onPlane(lo, lastBin), hi);
     }
 }
 

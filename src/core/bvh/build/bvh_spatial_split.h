@@ -26,8 +26,11 @@ struct SpatialSplit {
     uint32_t references = 0; // N(left) + N(right) estimated by the bins
 };
 
-// The spatial bins of some references along one axis: per bin, the box of the parts of the
-// triangles inside it and how many references start and end in it. min, max and sums are
+// The spatial bins of some references along one axis: per bin, how many references start and
+// end in it and the box of their parts in it, each part taken as the reference's box cut to
+// the bin's slab (a box around the triangle's own part, which would have to be clipped out of
+// it). The SAH cost a plane gets from the bins is then at least that of the split the plane
+// makes, whose references applySpatialSplit does clip to the plane. min, max and sums are
 // exact, so bins of parts of a node merged in a fixed order equal the bins of the whole.
 struct SpatialBins {
     SseBox box[kSpatialBins];
@@ -37,9 +40,9 @@ struct SpatialBins {
 };
 
 // Adds refs [first, last) (whose boxes lie in `bounds`, the node's) to `bins`, over
-// kSpatialBins planes across `axis`. `slack` is splitBox's (bvh_clip.h).
-void binSpatial(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
-                const Aabb& bounds, int axis, float slack, SpatialBins& bins);
+// kSpatialBins planes across `axis`.
+void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bounds, int axis,
+                SpatialBins& bins);
 
 // The best spatial split across `axis` of a node with these bins and bounds.
 SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int axis);
