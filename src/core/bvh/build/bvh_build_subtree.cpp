@@ -75,8 +75,8 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
 
     // The best spatial split, where the object split's children overlap much, across the
     // object split's axis: the cut competes with that split where its children overlap.
-    // Binning the other two axes as well was 40% of Sponza's build, and its trees traced
-    // slower (PERFORMANCE.md).
+    // Binning the other two axes as well took half of Sponza's build, and its trees traced
+    // slower (PERFORMANCE.md, "The BVH build").
     const bool trySpatial = splitBudget > 0 && context_.scene && choice.object.axis >= 0 &&
                             choice.object.overlapArea > context_.minOverlapArea &&
                             choice.object.overlapArea > context_.minNodeOverlap * bounds.area() &&

@@ -9,7 +9,8 @@ namespace raylab {
 
 namespace {
 
-// The plane between bin i - 1 and bin i (0 < i < kSpatialBins) of [lower, lower + extent].
+// The plane between bin i - 1 and bin i (0 < i < kSpatialBins) of [lower, lower + extent];
+// plane 0 is `lower` itself.
 float planeOf(float lower, float extent, int i) {
     return lower + extent * (static_cast<float>(i) / static_cast<float>(kSpatialBins));
 }
@@ -38,9 +39,10 @@ void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bou
         const float above = bin > 0.0f ? bin : 0.0f;
         return static_cast<int>(above < top ? above : top);
     };
-    // plane[i]: the plane between bins i - 1 and i, in lane `axis` of a register.
+    // plane[i]: the plane between bins i - 1 and i (plane[0]: the node's lower bound), in lane
+    // `axis` of a register.
     __m128 plane[kSpatialBins];
-    for (int i = 1; i < kSpatialBins; ++i) {
+    for (int i = 0; i < kSpatialBins; ++i) {
         plane[i] = _mm_set1_ps(planeOf(lower, extent, i));
     }
     alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
