@@ -6,6 +6,18 @@
 
 namespace raylab {
 
+// All bits set in lane `axis` (0, 1 or 2) of a register, the other lanes clear.
+inline __m128 axisLane(int axis) {
+    alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
+        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}};
+    return _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks[axis]));
+}
+
+// `rest` with the lane that `lane` (an axisLane) selects taken from `value`.
+inline __m128 withLane(__m128 lane, __m128 value, __m128 rest) {
+    return _mm_or_ps(_mm_and_ps(lane, value), _mm_andnot_ps(lane, rest));
+}
+
 // True when the box is empty on x, y or z (lane 3 is ignored).
 inline bool isEmpty(const SseBox& b) {
     return (_mm_movemask_ps(_mm_cmpgt_ps(b.lower, b.upper)) & 7) != 0;
@@ -19,9 +31,7 @@ inline void splitBoxSse(const Triangle& t, const SseBox& box, int axis, float po
     const __m128 v[3] = {_mm_loadu_ps(&t.v0.x), _mm_loadu_ps(&t.v1.x), _mm_loadu_ps(&t.v2.x)};
     const float c[3] = {t.v0[axis], t.v1[axis], t.v2[axis]};
     const __m128 plane = _mm_set1_ps(position);
-    alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
-        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}};
-    const __m128 onAxis = _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks[axis]));
+    const __m128 onAxis = axisLane(axis);
     // min(b, a) / max(b, a) as glm::min(a, b) / glm::max(a, b) choose, zeros and NaN included.
     auto extend = [](SseBox& b, __m128 p) {
         b.lower = _mm_min_ps(p, b.lower);
@@ -40,7 +50,7 @@ inline void splitBoxSse(const Triangle& t, const SseBox& box, int axis, float po
         if ((c[i] < position && c[j] > position) || (c[i] > position && c[j] < position)) {
             const float s = (position - c[i]) / (c[j] - c[i]);
             __m128 x = _mm_add_ps(v[i], _mm_mul_ps(_mm_set1_ps(s), _mm_sub_ps(v[j], v[i])));
-            x = _mm_or_ps(_mm_and_ps(onAxis, plane), _mm_andnot_ps(onAxis, x));
+            x = withLane(onAxis, plane, x);
             extend(left, x);
             extend(right, x);
         }
@@ -54,10 +64,8 @@ inline void splitBoxSse(const Triangle& t, const SseBox& box, int axis, float po
         b->upper = _mm_min_ps(box.upper, _mm_add_ps(b->upper, widen));
     }
     // left.upper[axis] = min(left.upper[axis], position), right.lower[axis] likewise with max.
-    left.upper = _mm_or_ps(_mm_and_ps(onAxis, _mm_min_ps(plane, left.upper)),
-                           _mm_andnot_ps(onAxis, left.upper));
-    right.lower = _mm_or_ps(_mm_and_ps(onAxis, _mm_max_ps(plane, right.lower)),
-                            _mm_andnot_ps(onAxis, right.lower));
+    left.upper = withLane(onAxis, _mm_min_ps(plane, left.upper), left.upper);
+    right.lower = withLane(onAxis, _mm_max_ps(plane, right.lower), right.lower);
 }
 
 } // namespace raylab

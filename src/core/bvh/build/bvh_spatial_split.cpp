@@ -31,29 +31,19 @@ void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bou
     if (!(extent > 0.0f)) {
         return; // a flat axis is never split
     }
-    // The bin of coordinate x is (x - lower) * scale clamped to [0, kSpatialBins - 1].
     const float scale = static_cast<float>(kSpatialBins) / extent;
-    const float top = static_cast<float>(kSpatialBins - 1);
-    auto binOf = [&](float x) {
-        const float bin = (x - lower) * scale;
-        const float above = bin > 0.0f ? bin : 0.0f;
-        return static_cast<int>(above < top ? above : top);
-    };
     // plane[i]: the plane between bins i - 1 and i (plane[0]: the node's lower bound), in lane
     // `axis` of a register.
     __m128 plane[kSpatialBins];
     for (int i = 0; i < kSpatialBins; ++i) {
         plane[i] = _mm_set1_ps(planeOf(lower, extent, i));
     }
-    alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
-        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}};
-    const __m128 onAxis = _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks[axis]));
-    auto onPlane = [&](__m128 box, int i) {
-        return _mm_or_ps(_mm_and_ps(onAxis, plane[i]), _mm_andnot_ps(onAxis, box));
-    };
+    const __m128 onAxis = axisLane(axis);
+    auto onPlane = [&](__m128 box, int i) { return withLane(onAxis, plane[i], box); };
     for (const PrimRecord* r = first; r != last; ++r) {
         const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
-        const int firstBin = binOf(r->lower[axis]), lastBin = binOf(r->upper[axis]);
+        const int firstBin = binOf(r->lower[axis], lower, scale, kSpatialBins);
+        const int lastBin = binOf(r->upper[axis], lower, scale, kSpatialBins);
         ++bins.entering[firstBin];
         ++bins.leaving[lastBin];
         if (firstBin == lastBin) {
