@@ -14,17 +14,17 @@ constexpr auto kSpin = std::chrono::microseconds(100);
 
 } // namespace
 
-template <typename Done> bool BuildTeam::spinUntil(const Done& done) {
+template <typename Done> void BuildTeam::spinUntil(const Done& done) {
     const auto until = std::chrono::steady_clock::now() + kSpin;
     for (;;) {
         for (int i = 0; i < 64; ++i) {
             if (done()) {
-                return true;
+                return;
             }
             _mm_pause();
         }
         if (std::chrono::steady_clock::now() > until) {
-            return done();
+            return;
         }
     }
 }

@@ -32,9 +32,9 @@ public:
 private:
     void helperLoop();
     void work(); // takes indices of the current loop until none is left
-    // Spins for a short while (kSpin, bvh_build_team.cpp) until done() holds; false if it still
-    // does not (the caller then sleeps on a condition variable as before).
-    template <typename Done> static bool spinUntil(const Done& done);
+    // Spins for a short while (kSpin, bvh_build_team.cpp) or until done() holds; the caller then
+    // waits on its condition variable, which returns at once if done() holds.
+    template <typename Done> static void spinUntil(const Done& done);
 
     std::mutex mutex_;
     std::condition_variable wake_;     // a new loop, or stop
