@@ -231,12 +231,13 @@ struct alignas(64) PacketEntry16 {
 };
 
 // The children of a node that some lane of `active` may enter (the header comment says how),
-// sorted nearest last by the entry distance of their first lane when `ordered` (closest hit),
-// else in slot order (any hit), as hitChildren of bvh_packet_avx2.cpp. Returns how many.
+// each prefetched (prefetchChild), sorted nearest last by the entry distance of their first lane
+// when `ordered` (closest hit), else in slot order (any hit), as hitChildren of
+// bvh_packet_avx2.cpp. Returns how many.
 template <bool ordered>
-RAYLAB_AVX512 inline int hitChildren16(const BvhWideNode& node, const Packet16& p, __m512 limit,
-                                       const float* laneLimit, float limitMax, unsigned active,
-                                       PacketEntry16* out) {
+RAYLAB_AVX512 inline int hitChildren16(const Bvh& bvh, const BvhWideNode& node, const Packet16& p,
+                                       __m512 limit, const float* laneLimit, float limitMax,
+                                       unsigned active, PacketEntry16* out) {
     int n = 0;
     float key[kWideLanes];
     __m256 frustumNear = _mm256_setzero_ps();
@@ -264,6 +265,7 @@ RAYLAB_AVX512 inline int hitChildren16(const BvhWideNode& node, const Packet16& 
         if (lanes == 0) {
             continue;
         }
+        prefetchChild(bvh, node.child[c]);
         if constexpr (!ordered) {
             out[n++] = PacketEntry16{tNear, node.child[c], lanes};
             continue;
@@ -339,8 +341,8 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
     unsigned active = p.lanes;
     for (;;) {
         if (!isLeaf(ref)) {
-            const int n = hitChildren16<true>(bvh.wideNodes[ref], p, limit, laneLimit, limitMax,
-                                              active, stack + size);
+            const int n = hitChildren16<true>(bvh, bvh.wideNodes[ref], p, limit, laneLimit,
+                                              limitMax, active, stack + size);
             if (n > 0) {
                 descend16(n, stack, size, ref, active);
                 continue;
@@ -383,8 +385,8 @@ RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
     unsigned active = p.lanes;
     for (;;) {
         if (!isLeaf(ref)) {
-            const int n = hitChildren16<false>(bvh.wideNodes[ref], p, p.tMax, laneTMax, tMaxMax,
-                                               active, stack + size);
+            const int n = hitChildren16<false>(bvh, bvh.wideNodes[ref], p, p.tMax, laneTMax,
+                                               tMaxMax, active, stack + size);
             if (n > 0) {
                 descend16(n, stack, size, ref, active);
                 continue;
