@@ -1,23 +1,23 @@
-// Packet traversal of the 8-wide BVH for 16 rays (AVX-512F for the 16-lane entry distances,
-// masks and reductions; the per-lane tests are the 8-lane packets' on each half). For coherent
-// rays a node costs about what it costs one ray, as in Embree's coherent packets:
+// Packet traversal of the 8-wide BVH for 16 rays (AVX-512F: each box and triangle test covers
+// the 16 lanes at once, bvh_packet16_lanes.h). For coherent rays a node costs about what it
+// costs one ray, as in Embree's coherent packets:
 // - a frustum (the interval of the lanes' origins and inverse directions) tests all 8 children
 //   at once and leaves out every child no lane can enter;
 // - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
 //   every active lane (a superset of the lanes that enter it) and the frustum's entry distance;
-// - only the other candidates are tested lane by lane (hitChild on each half);
+// - only the other candidates are tested lane by lane (hitChild16);
 // - in a leaf, the frustum leaves out the triangles whose (padded) bounding box no lane can
-//   enter, and each other triangle is tested against the active lanes, 8 at a time (a half
-//   without an active lane is skipped).
+//   enter, and each other triangle is tested against the active lanes.
+// Each node's children are prefetched as soon as they are taken (prefetchChild).
 // Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
-// Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with the same helpers: both halves
-// are set up by makePacket and traced together only when they share the ray permutation (else
-// each is its own 8-lane packet); triangles go through intersectTriangle8 / keepTriangle /
-// hitLanes, so t, u, v and the triangle are intersectTriangle's, lanes with an edge function of
-// exactly zero go to intersectTriangle itself, a lane keeps the minimum of (t, triangle index),
-// and a box is dropped for a lane only when it starts beyond that lane's own closest hit
-// (kBoxRoundUp): every culling test above is a superset of the lanes' own slab tests.
+// Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with their helpers on 16 lanes: both
+// halves are set up by makePacket and traced together only when they share the ray permutation
+// (else each is its own 8-lane packet); triangles go through intersectTriangle16 /
+// keepTriangle16 / hitLanes16, so t, u, v and the triangle are intersectTriangle's, lanes with an
+// edge function of exactly zero go to intersectTriangle itself, a lane keeps the minimum of (t,
+// triangle index), and a box is dropped for a lane only when it starts beyond that lane's own
+// closest hit (kBoxRoundUp): every culling test above is a superset of the lanes' own slab tests.
 
 // GCC 12's AVX-512 intrinsics start from _mm512_undefined_*() values, which -Wuninitialized
 // reports inside the intrinsics' headers: silenced before the first include of them.
@@ -31,30 +31,14 @@
 #if defined(__x86_64__) || defined(__i386__)
 
 #include "bvh/build/bvh_collapse.h"
-#include "bvh/traverse/bvh_packet_lanes.h"
+#include "bvh/traverse/bvh_packet16_lanes.h"
 #include "bvh/traverse/bvh_packet_traverse.h"
-
-// AVX-512 Foundation on top of the AVX2 helpers (bvhPacket16Supported checks both).
-#define RAYLAB_AVX512 __attribute__((target("avx2,popcnt,avx512f")))
 
 namespace raylab {
 
 namespace {
 
-using namespace packet_lanes;
-
-// Two 8-lane registers as one of 16: lo in lanes 0-7, hi in lanes 8-15.
-RAYLAB_AVX512 inline __m512 join(__m256 lo, __m256 hi) {
-    return _mm512_castpd_ps(
-        _mm512_insertf64x4(_mm512_castps_pd(_mm512_castps256_ps512(lo)), _mm256_castps_pd(hi), 1));
-}
-
-// Lanes 0-7 (h = 0) or 8-15 (h = 1) of x. The extraction's lane index must be an immediate
-// even where the optimiser does not fold h (sanitizer builds), hence the two constants.
-RAYLAB_AVX512 inline __m256 half(__m512 x, int h) {
-    const __m512d d = _mm512_castps_pd(x);
-    return _mm256_castpd_ps(h == 0 ? _mm512_extractf64x4_pd(d, 0) : _mm512_extractf64x4_pd(d, 1));
-}
+using namespace packet16_lanes;
 
 // Bounds of the 16 rays' box test, for all 8 children of a node at once: per axis, the interval
 // of the lanes' origins and of their inverse directions, so that for every lane
@@ -74,13 +58,11 @@ struct alignas(64) LaneScalars {
     float origin[3][kPacket16Size], inverse[3][kPacket16Size], tMin[kPacket16Size];
 };
 
-// The 16 rays: both halves' PacketRays (sharing k), and the box test's fields joined.
+// The 16 rays: both halves' PacketRays (sharing k), and joined.
 struct Packet16 {
     PacketRays half[2];
-    const RayPacket* rays[2];
+    PacketRays16 rays;
     unsigned lanes = 0; // 16 bits
-    __m512 origin[3], inverse[3];
-    __m512 tMin, tMax;
     Frustum frustum;
     LaneScalars scalars;
 };
@@ -91,22 +73,22 @@ RAYLAB_AVX512 inline void makeFrustum(Packet16& p) {
     f.valid = p.lanes != 0;
     for (int a = 0; a < 3 && f.valid; ++a) {
         const unsigned negative =
-            _mm512_mask_cmp_ps_mask(lanes, p.inverse[a], _mm512_setzero_ps(), _CMP_LT_OQ);
+            _mm512_mask_cmp_ps_mask(lanes, p.rays.inverse[a], _mm512_setzero_ps(), _CMP_LT_OQ);
         f.valid = negative == 0 || negative == p.lanes;
         const int nearIsUpper = negative != 0 ? 1 : 0;
         // lower[a] starts at float a * 8, upper[a] at 24 + a * 8.
         f.nearOffset[a] = nearIsUpper * 24 + a * kWideLanes;
         f.farOffset[a] = (1 - nearIsUpper) * 24 + a * kWideLanes;
-        const float originMin = _mm512_mask_reduce_min_ps(lanes, p.origin[a]);
-        const float originMax = _mm512_mask_reduce_max_ps(lanes, p.origin[a]);
+        const float originMin = _mm512_mask_reduce_min_ps(lanes, p.rays.origin[a]);
+        const float originMax = _mm512_mask_reduce_max_ps(lanes, p.rays.origin[a]);
         // Towards +a the near distance is smallest from the largest origin, the far distance
         // largest from the smallest one; towards -a the other way round.
         f.nearOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMin : originMax);
         f.farOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMax : originMin);
-        f.inverseMin[a] = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.inverse[a]));
-        f.inverseMax[a] = _mm256_set1_ps(_mm512_mask_reduce_max_ps(lanes, p.inverse[a]));
+        f.inverseMin[a] = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.rays.inverse[a]));
+        f.inverseMax[a] = _mm256_set1_ps(_mm512_mask_reduce_max_ps(lanes, p.rays.inverse[a]));
     }
-    f.tMin = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.tMin));
+    f.tMin = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.rays.tMin));
 }
 
 // Of 8 boxes given as lower[3][8] then upper[3][8] floats (BvhWideNode's layout), those some
@@ -193,35 +175,15 @@ RAYLAB_AVX512 inline bool makePacket16(const RayPacket& low, const RayPacket& hi
         empty.shearY = full.shearY;
         empty.shearZ = full.shearZ;
     }
-    p.rays[0] = &low;
-    p.rays[1] = &high;
     p.lanes = a.lanes | b.lanes << kPacketSize;
+    joinPacket(a, b, low, high, p.rays);
     for (int axis = 0; axis < 3; ++axis) {
-        p.origin[axis] = join(a.origin[axis], b.origin[axis]);
-        p.inverse[axis] = join(a.inverse[axis], b.inverse[axis]);
+        _mm512_store_ps(p.scalars.origin[axis], p.rays.origin[axis]);
+        _mm512_store_ps(p.scalars.inverse[axis], p.rays.inverse[axis]);
     }
-    p.tMin = join(a.tMin, b.tMin);
-    p.tMax = join(a.tMax, b.tMax);
-    for (int axis = 0; axis < 3; ++axis) {
-        _mm512_store_ps(p.scalars.origin[axis], p.origin[axis]);
-        _mm512_store_ps(p.scalars.inverse[axis], p.inverse[axis]);
-    }
-    _mm512_store_ps(p.scalars.tMin, p.tMin);
+    _mm512_store_ps(p.scalars.tMin, p.rays.tMin);
     makeFrustum(p);
     return true;
-}
-
-// Slab test of child c's box against the 16 lanes (hitChild on each half): the lanes whose
-// (tMin, limit] overlaps the box, and their entry distances.
-RAYLAB_AVX512 inline unsigned hitChild16(const BvhWideNode& node, int c, const Packet16& p,
-                                         __m512 limit, __m512& tNear) {
-    __m256 tn[2];
-    unsigned lanes = 0;
-    for (int h = 0; h < 2; ++h) {
-        lanes |= hitChild(node, c, p.half[h], half(limit, h), tn[h]) << (h * kPacketSize);
-    }
-    tNear = join(tn[0], tn[1]);
-    return lanes;
 }
 
 struct alignas(64) PacketEntry16 {
@@ -260,7 +222,7 @@ RAYLAB_AVX512 inline int hitChildren16(const Bvh& bvh, const BvhWideNode& node, 
             tNear = _mm512_set1_ps(fn[c]);
             lanes = active;
         } else {
-            lanes = hitChild16(node, c, p, limit, tNear) & active;
+            lanes = hitChild16(node, c, p.rays, limit, tNear) & active;
         }
         if (lanes == 0) {
             continue;
@@ -292,16 +254,12 @@ RAYLAB_AVX512 inline void descend16(int n, const PacketEntry16* stack, int& size
     active = stack[size].lanes;
 }
 
-// The 8 lanes of half h of a 16-lane mask.
-inline unsigned halfLanes(unsigned lanes, int h) { return (lanes >> (h * kPacketSize)) & 0xffu; }
-
 // Tests the triangles of leaf `ref` that some lane may hit before limitMax (frustumTriangles)
-// against the lanes of `active`, 8 lanes at a time (a half without active lanes is skipped).
-// Closest hit: keeps each half's closest hits in best[half]. Any hit: adds the lanes that hit to
-// `found`, drops them from `active`, and stops when none is left.
+// against the lanes of `active`. Closest hit: keeps the lanes' closest hits in best. Any hit:
+// adds the lanes that hit to `found`, drops them from `active`, and stops when none is left.
 template <bool closest>
 RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16& p, float limitMax,
-                                   PacketBest* best, unsigned& active, unsigned& found) {
+                                   PacketBest16* best, unsigned& active, unsigned& found) {
     const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
     for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
         for (unsigned m = frustumTriangles(*block, p.frustum, bvh.boxPad, limitMax);
@@ -310,27 +268,20 @@ RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16&
             if (repeatsFirst(*block, tri)) {
                 continue;
             }
-            for (int h = 0; h < 2; ++h) {
-                const unsigned lanes = halfLanes(active, h);
-                if (lanes == 0) {
-                    continue;
-                }
-                if constexpr (closest) {
-                    keepTriangle(best[h], *block, tri, p.half[h], *p.rays[h], lanes);
-                } else {
-                    const unsigned hit = hitLanes(*block, tri, p.half[h], *p.rays[h], lanes)
-                                         << (h * kPacketSize);
-                    found |= hit;
-                    active &= ~hit;
-                }
+            if constexpr (closest) {
+                keepTriangle16(*best, *block, tri, p.rays, active);
+            } else {
+                const unsigned hit = hitLanes16(*block, tri, p.rays, active);
+                found |= hit;
+                active &= ~hit;
             }
         }
     }
 }
 
 RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, HitPacket* hits[2]) {
-    PacketBest best[2] = {noHitYet(), noHitYet()};
-    __m512 limit = p.tMax; // per lane: min(tMax, best.t)
+    PacketBest16 best = noHitYet16();
+    __m512 limit = p.rays.tMax; // per lane: min(tMax, best.t)
     float limitMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), limit);
     alignas(64) float laneLimit[kPacket16Size];
     _mm512_store_ps(laneLimit, limit);
@@ -349,8 +300,8 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
             }
         } else {
             unsigned found = 0;
-            testLeaf<true>(bvh, ref, p, limitMax, best, active, found);
-            limit = _mm512_min_ps(p.tMax, join(best[0].t, best[1].t));
+            testLeaf<true>(bvh, ref, p, limitMax, &best, active, found);
+            limit = _mm512_min_ps(p.rays.tMax, best.t);
             limitMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), limit);
             _mm512_store_ps(laneLimit, limit);
         }
@@ -358,7 +309,7 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
         for (;;) {
             if (size == 0) {
                 for (int h = 0; h < 2; ++h) {
-                    writeBest(best[h], halfLanes(p.lanes, h), *hits[h]);
+                    writeBest(halfOf(best, h), halfLanes(p.lanes, h), *hits[h]);
                 }
                 return p.half[0].others | p.half[1].others << kPacketSize;
             }
@@ -375,9 +326,9 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
 }
 
 RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
-    const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.tMax);
+    const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.rays.tMax);
     alignas(64) float laneTMax[kPacket16Size];
-    _mm512_store_ps(laneTMax, p.tMax);
+    _mm512_store_ps(laneTMax, p.rays.tMax);
     unsigned found = 0;                      // lanes with a hit
     PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
     int size = 0;
@@ -385,7 +336,7 @@ RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
     unsigned active = p.lanes;
     for (;;) {
         if (!isLeaf(ref)) {
-            const int n = hitChildren16<false>(bvh, bvh.wideNodes[ref], p, p.tMax, laneTMax,
+            const int n = hitChildren16<false>(bvh, bvh.wideNodes[ref], p, p.rays.tMax, laneTMax,
                                                tMaxMax, active, stack + size);
             if (n > 0) {
                 descend16(n, stack, size, ref, active);
