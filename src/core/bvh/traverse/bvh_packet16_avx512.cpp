@@ -58,11 +58,11 @@ struct alignas(64) LaneScalars {
     float origin[3][kPacket16Size], inverse[3][kPacket16Size], tMin[kPacket16Size];
 };
 
-// The 16 rays: both halves' PacketRays (sharing k), and joined.
+// The 16 rays.
 struct Packet16 {
-    PacketRays half[2];
     PacketRays16 rays;
-    unsigned lanes = 0; // 16 bits
+    unsigned lanes = 0;  // 16 bits: the lanes traced
+    unsigned others = 0; // valid lanes of another permutation (single-ray path)
     Frustum frustum;
     LaneScalars scalars;
 };
@@ -152,31 +152,39 @@ RAYLAB_AVX512 inline unsigned laneChildren(const BvhWideNode& node, const LaneSc
         _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
 }
 
-// Sets up both halves; false when their packets have different permutations.
+// Sets up the 16 rays: each half's packet (makePacket: the valid lanes sharing its most common
+// permutation), joined; at once when all valid lanes share one (makeSharedPacket16). False when
+// the halves' packets have different permutations.
 RAYLAB_AVX512 inline bool makePacket16(const RayPacket& low, const RayPacket& high, Packet16& p) {
-    makePacket(low, p.half[0]);
-    makePacket(high, p.half[1]);
-    const PacketRays& a = p.half[0];
-    const PacketRays& b = p.half[1];
-    if (a.lanes != 0 && b.lanes != 0 &&
-        (a.k[0] != b.k[0] || a.k[1] != b.k[1] || a.k[2] != b.k[2])) {
-        return false;
-    }
-    // A half without lanes takes the other's permutation: its registers are never read back.
-    PacketRays& empty = a.lanes == 0 ? p.half[0] : p.half[1];
-    const PacketRays& full = a.lanes == 0 ? b : a;
-    if (empty.lanes == 0) {
-        for (int i = 0; i < 3; ++i) {
-            empty.k[i] = full.k[i];
-            empty.vertexOffset[i] = full.vertexOffset[i];
-            empty.originK[i] = full.originK[i];
+    if (makeSharedPacket16(low, high, p.rays, p.lanes)) {
+        p.others = 0;
+    } else {
+        PacketRays half[2];
+        makePacket(low, half[0]);
+        makePacket(high, half[1]);
+        PacketRays& a = half[0];
+        PacketRays& b = half[1];
+        if (a.lanes != 0 && b.lanes != 0 &&
+            (a.k[0] != b.k[0] || a.k[1] != b.k[1] || a.k[2] != b.k[2])) {
+            return false;
         }
-        empty.shearX = full.shearX;
-        empty.shearY = full.shearY;
-        empty.shearZ = full.shearZ;
+        // A half without lanes takes the other's permutation: its registers are never read.
+        PacketRays& empty = a.lanes == 0 ? a : b;
+        const PacketRays& full = a.lanes == 0 ? b : a;
+        if (empty.lanes == 0) {
+            for (int i = 0; i < 3; ++i) {
+                empty.k[i] = full.k[i];
+                empty.vertexOffset[i] = full.vertexOffset[i];
+                empty.originK[i] = full.originK[i];
+            }
+            empty.shearX = full.shearX;
+            empty.shearY = full.shearY;
+            empty.shearZ = full.shearZ;
+        }
+        p.lanes = a.lanes | b.lanes << kPacketSize;
+        p.others = a.others | b.others << kPacketSize;
+        joinPacket(a, b, low, high, p.rays);
     }
-    p.lanes = a.lanes | b.lanes << kPacketSize;
-    joinPacket(a, b, low, high, p.rays);
     for (int axis = 0; axis < 3; ++axis) {
         _mm512_store_ps(p.scalars.origin[axis], p.rays.origin[axis]);
         _mm512_store_ps(p.scalars.inverse[axis], p.rays.inverse[axis]);
@@ -311,7 +319,7 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
                 for (int h = 0; h < 2; ++h) {
                     writeBest(halfOf(best, h), halfLanes(p.lanes, h), *hits[h]);
                 }
-                return p.half[0].others | p.half[1].others << kPacketSize;
+                return p.others;
             }
             const PacketEntry16& e = stack[--size];
             const unsigned open =
@@ -373,11 +381,10 @@ RAYLAB_AVX512 unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low,
         return closestHitPacket(bvh, low, lowHits) | closestHitPacket(bvh, high, highHits)
                                                          << kPacketSize;
     }
-    const unsigned others = p.half[0].others | p.half[1].others << kPacketSize;
     if (p.lanes == 0) {
         lowHits.clear();
         highHits.clear();
-        return others;
+        return p.others;
     }
     HitPacket* hits[2] = {&lowHits, &highHits};
     return closestHit16Avx512(bvh, p, hits);
@@ -394,7 +401,7 @@ RAYLAB_AVX512 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, cons
         return others;
     }
     occluded = p.lanes != 0 ? anyHit16Avx512(bvh, p) : 0u;
-    return p.half[0].others | p.half[1].others << kPacketSize;
+    return p.others;
 }
 
 } // namespace raylab

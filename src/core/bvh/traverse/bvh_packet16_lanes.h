@@ -58,6 +58,85 @@ RAYLAB_AVX512 inline void joinPacket(const PacketRays& low, const PacketRays& hi
     p.rays[1] = &highRays;
 }
 
+// 8 floats of lo and 8 of hi as one register (lanes 0-7, 8-15).
+RAYLAB_AVX512 inline __m512 loadJoined(const float* lo, const float* hi) {
+    return join(_mm256_load_ps(lo), _mm256_load_ps(hi));
+}
+
+// Lanes whose value is finite (not NaN, not +-inf).
+RAYLAB_AVX512 inline unsigned isFinite16(__m512 x) {
+    return _mm512_cmp_ps_mask(_mm512_abs_ps(x), _mm512_set1_ps(kInfinity), _CMP_LT_OQ);
+}
+
+// x with the sign bit of `sign` (AVX-512F has no float or / and).
+RAYLAB_AVX512 inline __m512 withSignOf(__m512 x, __m512 sign) {
+    const __m512i signBit = _mm512_set1_epi32(static_cast<int>(0x80000000u));
+    return _mm512_castsi512_ps(_mm512_or_si512(
+        _mm512_castps_si512(x), _mm512_and_si512(_mm512_castps_si512(sign), signBit)));
+}
+
+// Sets up p for the 16 rays of low (lanes 0-7) and high (lanes 8-15) when every valid lane of
+// their lanes shares the first valid lane's ray permutation, the common case of coherent rays:
+// then each half's makePacket would pick that permutation for all its valid lanes, and p is the
+// join of the two (joinPacket), computed on 16 lanes at once. Returns the valid lanes (`lanes`,
+// 16 bits), or false when they do not share one permutation and nothing of p is set. The
+// validity test, the permutation and every quotient are makePacket's, lane by lane.
+RAYLAB_AVX512 inline bool makeSharedPacket16(const RayPacket& low, const RayPacket& high,
+                                             PacketRays16& p, unsigned& lanes) {
+    __m512 d[3];
+    for (int a = 0; a < 3; ++a) {
+        p.origin[a] = loadJoined(low.origin[a], high.origin[a]);
+        d[a] = loadJoined(low.direction[a], high.direction[a]);
+    }
+    p.tMin = loadJoined(low.tMin, high.tMin);
+    p.tMax = loadJoined(low.tMax, high.tMax);
+    const __m512 zero = _mm512_setzero_ps();
+    const unsigned valid =
+        isFinite16(p.origin[0]) & isFinite16(p.origin[1]) & isFinite16(p.origin[2]) &
+        _mm512_cmp_ps_mask(p.tMin, p.tMax, _CMP_ORD_Q) & isFinite16(d[0]) & isFinite16(d[1]) &
+        isFinite16(d[2]) &
+        (_mm512_cmp_ps_mask(d[0], zero, _CMP_NEQ_OQ) | _mm512_cmp_ps_mask(d[1], zero, _CMP_NEQ_OQ) |
+         _mm512_cmp_ps_mask(d[2], zero, _CMP_NEQ_OQ));
+    lanes = valid & (low.lanes | high.lanes << kPacketSize);
+    const __m512 ax = _mm512_abs_ps(d[0]);
+    const __m512 ay = _mm512_abs_ps(d[1]);
+    const __m512 az = _mm512_abs_ps(d[2]);
+    const unsigned xy = _mm512_cmp_ps_mask(ax, ay, _CMP_GT_OQ);
+    const unsigned x = xy & _mm512_cmp_ps_mask(ax, az, _CMP_GT_OQ);
+    const unsigned y = ~xy & _mm512_cmp_ps_mask(ay, az, _CMP_GT_OQ);
+    const __m512 dkz = _mm512_mask_mov_ps(_mm512_mask_mov_ps(d[2], static_cast<__mmask16>(y), d[1]),
+                                          static_cast<__mmask16>(x), d[0]);
+    const unsigned negative = _mm512_cmp_ps_mask(dkz, zero, _CMP_LT_OQ);
+    int kz = 2;
+    bool kzNegative = false;
+    if (lanes != 0) {
+        const unsigned first = lanes & (0u - lanes);
+        kz = (x & first) != 0 ? 0 : (y & first) != 0 ? 1 : 2;
+        kzNegative = (negative & first) != 0;
+        const unsigned byAxis = kz == 0 ? x : kz == 1 ? y & ~x : ~(x | y);
+        if ((lanes & byAxis & (kzNegative ? negative : ~negative)) != lanes) {
+            return false;
+        }
+    }
+    int k[3];
+    rayPermutation(kz, kzNegative, k);
+    const __m512 one = _mm512_set1_ps(1.0f);
+    const __m512 tiny = _mm512_set1_ps(1e-30f);
+    for (int a = 0; a < 3; ++a) {
+        // boxDirection (bvh_box_ray.h): +-1e-30 with d's sign where |d| < 1e-30.
+        const __mmask16 small = _mm512_cmp_ps_mask(_mm512_abs_ps(d[a]), tiny, _CMP_LT_OQ);
+        p.inverse[a] = _mm512_div_ps(one, _mm512_mask_mov_ps(d[a], small, withSignOf(tiny, d[a])));
+        p.originK[a] = p.origin[k[a]];
+        p.vertexOffset[a] = k[a] * kWideLanes;
+    }
+    p.shearX = _mm512_div_ps(d[k[0]], d[kz]);
+    p.shearY = _mm512_div_ps(d[k[1]], d[kz]);
+    p.shearZ = _mm512_div_ps(one, d[kz]);
+    p.rays[0] = &low;
+    p.rays[1] = &high;
+    return true;
+}
+
 // Slab test of child c's box against the 16 lanes (hitChild's on each lane): the lanes whose
 // (tMin, limit] overlaps the box, and their entry distances.
 RAYLAB_AVX512 inline unsigned hitChild16(const BvhWideNode& node, int c, const PacketRays16& p,

@@ -32,6 +32,16 @@ RAYLAB_AVX2 inline __m256 isFinite8(__m256 x) {
                          _CMP_LT_OQ);
 }
 
+// WatertightRay's permutation for the axis kz of a ray's largest |d| and the sign of d[kz]: kx
+// and ky follow kz cyclically and swap when d[kz] < 0.
+inline void rayPermutation(int kz, bool negative, int k[3]) {
+    const int next = kz == 2 ? 0 : kz + 1;
+    const int after = next == 2 ? 0 : next + 1;
+    k[0] = negative ? after : next;
+    k[1] = negative ? next : after;
+    k[2] = kz;
+}
+
 // Fills p for the lanes of rays.lanes. The validity test and the permutation are
 // WatertightRay's constructor's (triangle_intersection.cpp), and so are the shear quotients,
 // lane by lane: kz is the axis of the largest |d| (the first of equal ones as there), kx and ky
@@ -96,16 +106,8 @@ RAYLAB_AVX2 inline void makePacket(const RayPacket& rays, PacketRays& p) {
     }
     p.lanes = best;
     p.others = validLanes & ~best;
-    int kx = bestKz == 2 ? 0 : bestKz + 1;
-    int ky = kx == 2 ? 0 : kx + 1;
-    if (bestNegative) {
-        const int swap = kx;
-        kx = ky;
-        ky = swap;
-    }
-    p.k[0] = kx;
-    p.k[1] = ky;
-    p.k[2] = bestKz;
+    rayPermutation(bestKz, bestNegative, p.k);
+    const int kx = p.k[0], ky = p.k[1];
 
     const __m256 one = _mm256_set1_ps(1.0f);
     const __m256 tiny = _mm256_set1_ps(1e-30f);
