@@ -314,7 +314,7 @@ int run(int argc, char** argv) {
         timeInTurns(rays, threads, frames, bounceTurns, &TracerFigures::all);
     }
     // The renderer's own path for this scene.
-    const bool rendererBlocks = blocks && tracesInBlocks(bvh);
+    const bool rendererBlocks = blocks && tracingFor(bvh) == BlockTracing::Frustums;
     report.raylabPath = rendererBlocks ? "blocks"
                         : packets16    ? "packets16"
                         : packets      ? "packets"

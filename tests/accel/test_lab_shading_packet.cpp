@@ -1,6 +1,7 @@
 // shadeLab8 (packets of camera and shadow rays) against shadeLab, pixel for pixel.
 
 #include "accel_scenes.h"
+#include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/lab_shading.h"
@@ -90,11 +91,12 @@ TEST(LabShadingPacket, LaneMasksWithGaps) {
     EXPECT_GT(lit, 500);
 }
 
-// shadeLabBlock (a block's packets traced together through frustum candidates, fitted to the
-// rays or from the block's image rectangle) against shadeLab8 packet by packet: blocks of 1 to 8
-// rows, rows of 1 to 8 lanes, lanes with gaps, with and without shadows, for the box (traced
-// through frustums) and a soup of 5,000 triangles (too large a scene: packet by packet).
-void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings) {
+// shadeLabBlock (a block's packets traced together as `tracing` says: through frustum
+// candidates, fitted to the rays or from the block's image rectangle, or packet by packet)
+// against shadeLab8 packet by packet: blocks of 1 to 8 rows, rows of 1 to 8 lanes, lanes with
+// gaps, with and without shadows, for the box and a soup of 5,000 triangles.
+void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings,
+                                     BlockTracing tracing) {
     const Bvh bvh = buildBvh(scene);
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
     int lit = 0;
@@ -116,12 +118,13 @@ void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings
             }
             RadiancePacket block[kPacketSize], framed[kPacketSize], single[kPacketSize];
             RayCounts blockCounts, framedCounts, singleCounts;
-            shadeLabBlock(scene, bvh, settings, packets, rows, block, blockCounts);
+            shadeLabBlock(scene, bvh, settings, packets, rows, block, blockCounts, tracing);
             // As the renderer calls it: the camera rays' frustum from the block's pixels.
             const ImageRect rect{static_cast<float>(x0), static_cast<float>(y0),
                                  static_cast<float>(x0 + kPacketSize),
                                  static_cast<float>(y0 + rows)};
-            shadeLabBlock(scene, bvh, settings, primary, rect, packets, rows, framed, framedCounts);
+            shadeLabBlock(scene, bvh, settings, primary, rect, packets, rows, framed, framedCounts,
+                          tracing);
             for (int r = 0; r < rows; ++r) {
                 shadeLab8(scene, bvh, settings, packets[r], single[r], singleCounts);
                 ASSERT_EQ(std::memcmp(&block[r], &single[r], sizeof(RadiancePacket)), 0)
@@ -142,17 +145,31 @@ void expectBlockShadingEqualsPackets(const Scene& scene, RenderSettings settings
 }
 
 TEST(LabShadingPacket, BlocksEqualPackets) {
-    RenderSettings settings;
-    settings.width = 96;
-    settings.height = 72;
-    expectBlockShadingEqualsPackets(makeCornellBox(), settings);
-    settings.shadowEpsilon = 0.0f;
-    expectBlockShadingEqualsPackets(makeCornellBox(), settings);
-    settings.shadows = false;
-    expectBlockShadingEqualsPackets(makeCornellBox(), settings);
-    settings.shadows = true;
-    settings.light.position = {0.5f, 2.0f, -1.5f};
-    expectBlockShadingEqualsPackets(makeTriangleSoup(5000, 0.1f, 31), settings);
+    for (const BlockTracing tracing :
+         {BlockTracing::ForScene, BlockTracing::Frustums, BlockTracing::Packets}) {
+        RenderSettings settings;
+        settings.width = 96;
+        settings.height = 72;
+        expectBlockShadingEqualsPackets(makeCornellBox(), settings, tracing);
+        settings.shadowEpsilon = 0.0f;
+        expectBlockShadingEqualsPackets(makeCornellBox(), settings, tracing);
+        settings.shadows = false;
+        expectBlockShadingEqualsPackets(makeCornellBox(), settings, tracing);
+        settings.shadows = true;
+        settings.light.position = {0.5f, 2.0f, -1.5f};
+        expectBlockShadingEqualsPackets(makeTriangleSoup(5000, 0.1f, 31), settings, tracing);
+    }
+}
+
+// The renderer's rule: frustums only for small scenes on CPUs without the 16-ray AVX-512
+// packets, and never for a mesh of thousands of triangles.
+TEST(LabShadingPacket, TracingForTheScene) {
+    const Bvh box = buildBvh(makeCornellBox());
+    const Bvh soup = buildBvh(makeTriangleSoup(5000, 0.1f, 31));
+    EXPECT_EQ(tracingFor(soup), BlockTracing::Packets);
+    EXPECT_EQ(tracingFor(box), bvhSimdSupported() && !bvhPacket16Supported()
+                                   ? BlockTracing::Frustums
+                                   : BlockTracing::Packets);
 }
 
 // tilePixel lays a block's 8 packets out as four 4 x 4 tiles: every pixel of the 8 x 8 block
@@ -191,7 +208,7 @@ TEST(LabShadingPacket, TilePixelsCoverTheBlockInFourByFourTiles) {
 // in each row's lanes, and the same counts.
 void expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& settings) {
     const Bvh bvh = buildBvh(scene);
-    ASSERT_FALSE(tracesInBlocks(bvh));
+    ASSERT_EQ(tracingFor(bvh), BlockTracing::Packets);
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
     int lit = 0, shadowed = 0;
     for (int y0 = 0; y0 + kPacketSize <= settings.height; y0 += kPacketSize) {

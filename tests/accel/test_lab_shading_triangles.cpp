@@ -161,7 +161,8 @@ TEST(LabShadingTriangles, PacketsEqualTheScalarStagesForTrianglesOfEveryKind) {
     expectShadingOfEveryTriangle(scene, settings);
 }
 
-// shadeLab8 and shadeLabBlock against shadeLab, pixel for pixel; returns the lanes' radiance.
+// shadeLab8 and shadeLabBlock (through frustums and packet by packet) against shadeLab, pixel
+// for pixel; returns the lanes' radiance.
 std::vector<glm::vec3> expectPacketsEqualScalar(const Scene& scene, const Bvh& bvh,
                                                 const RenderSettings& settings) {
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
@@ -175,9 +176,12 @@ std::vector<glm::vec3> expectPacketsEqualScalar(const Scene& scene, const Bvh& b
                                                       static_cast<float>(y0 + r) + 0.5f));
                 }
             }
-            RadiancePacket block[kPacketSize];
+            RadiancePacket block[kPacketSize], tiles[kPacketSize];
             RayCounts counts;
-            shadeLabBlock(scene, bvh, settings, packets, kPacketSize, block, counts);
+            shadeLabBlock(scene, bvh, settings, packets, kPacketSize, block, counts,
+                          BlockTracing::Frustums);
+            shadeLabBlock(scene, bvh, settings, packets, kPacketSize, tiles, counts,
+                          BlockTracing::Packets);
             for (int r = 0; r < kPacketSize; ++r) {
                 RadiancePacket single;
                 shadeLab8(scene, bvh, settings, packets[r], single, counts);
@@ -186,9 +190,12 @@ std::vector<glm::vec3> expectPacketsEqualScalar(const Scene& scene, const Bvh& b
                         shadeLab(scene, bvh, settings, packets[r].ray(i), counts);
                     const glm::vec3 fromBlock(block[r].value[0][i], block[r].value[1][i],
                                               block[r].value[2][i]);
+                    const glm::vec3 fromTiles(tiles[r].value[0][i], tiles[r].value[1][i],
+                                              tiles[r].value[2][i]);
                     const glm::vec3 fromPacket(single.value[0][i], single.value[1][i],
                                                single.value[2][i]);
                     EXPECT_TRUE(sameBits(fromBlock, expected)) << x0 + i << ", " << y0 + r;
+                    EXPECT_TRUE(sameBits(fromTiles, expected)) << x0 + i << ", " << y0 + r;
                     EXPECT_TRUE(sameBits(fromPacket, expected)) << x0 + i << ", " << y0 + r;
                     image.push_back(expected);
                 }

@@ -61,17 +61,22 @@ struct alignas(32) RadiancePacket {
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                const RayPacket& rays, RadiancePacket& radiance, RayCounts& counts);
 
-// Whether shadeLabBlock traces this scene's blocks through frustum candidates (small scenes, with
-// the 8-wide BVH) rather than packet by packet: the one rule the renderer and raylab-bench share.
-bool tracesInBlocks(const Bvh& bvh);
+// How shadeLabBlock traces a block's rays: through frustum candidates (bvh_frustum.h: one walk
+// for the block's camera rays, one for its shadow rays), or packet by packet (16-ray packets in
+// 4 x 4 tiles where the CPU has AVX-512, else 8-ray packets). `ForScene` is tracingFor's choice.
+enum class BlockTracing { ForScene, Frustums, Packets };
+
+// The renderer's choice for this scene and CPU (Frustums or Packets): the one rule the renderer
+// and raylab-bench share.
+BlockTracing tracingFor(const Bvh& bvh);
 
 // A pixel of an 8 x 8 block, from its top-left corner.
 struct BlockPixel {
     int x, y;
 };
 
-// Where shadeLabBlock traces a full block (8 rows of 8 pixels) of a scene it does not trace in
-// blocks as four 4 x 4 tiles, one 16-ray packet each (closestHit16): the pixel of lane `lane`
+// Where shadeLabBlock traces a full block (8 rows of 8 pixels) packet by packet, as four 4 x 4
+// tiles, one 16-ray packet each (closestHit16): the pixel of lane `lane`
 // of its packet `packet`, 0 <= both < kPacketSize. Packets 2t and 2t + 1 are tile t's upper
 // and lower 4 x 2 pixels (tiles left to right, then top to bottom); lane i is column i % 4 and
 // row i / 4 of its 4 x 2 pixels.
@@ -81,16 +86,18 @@ constexpr BlockPixel tilePixel(int packet, int lane) {
 }
 
 // shadeLab8 for each of rays[0, count), 0 <= count <= kPacketSize, with the same results: the
-// rays of an image block (camera rays from one origin), whose triangles and whose shadow rays'
-// blockers are found once for the block (bvh_frustum.h) where the CPU has AVX2.
+// rays of an image block (camera rays from one origin), traced as `tracing` says (frustums only
+// where the CPU has AVX2 and the BVH its 8-wide form; packets otherwise).
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts);
+                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts,
+                   BlockTracing tracing = BlockTracing::ForScene);
 
 // The same for camera rays made by camera.through8 from image points in `rect` (the block's
 // pixels): the camera rays' frustum comes from the rectangle (frustumOfImageRect), not the rays.
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
-                   int count, RadiancePacket* radiance, RayCounts& counts);
+                   int count, RadiancePacket* radiance, RayCounts& counts,
+                   BlockTracing tracing = BlockTracing::ForScene);
 
 // The same for Ray records: radiance[i] for rays[0, count), 0 <= count <= kPacketSize.
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,

@@ -1,8 +1,9 @@
-// shadeLabBlock: the packets of an image block share one frustum walk for their camera rays and
-// one for their shadow rays (bvh_frustum.h); packets whose frustum holds too many triangles are
-// traced one by one through the BVH, and a large scene's block as packets of 16 rays where the
-// CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles, else its rows two by two;
-// without AVX-512, row by row. Either way each lane's radiance is shadeLab8's.
+// shadeLabBlock: through frustums, the packets of an image block share one frustum walk for their
+// camera rays and one for their shadow rays (bvh_frustum.h), and packets whose frustum holds too
+// many triangles are traced one by one through the BVH; packet by packet, a block is traced as
+// packets of 16 rays where the CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles,
+// else its rows two by two; without AVX-512, row by row. Either way each lane's radiance is
+// shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -99,8 +100,12 @@ bool fullBlock(const RayPacket* rays, int count) {
 // shadeLabBlock, with the camera rays' frustum from `camera` and `rect` when camera is set.
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
-                RadiancePacket* radiance, RayCounts& counts) {
-    if (!tracesInBlocks(bvh)) {
+                RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing) {
+    static const bool simd = bvhSimdSupported();
+    if (tracing == BlockTracing::ForScene) {
+        tracing = tracingFor(bvh);
+    }
+    if (tracing == BlockTracing::Packets || !simd || bvh.wideNodes.empty()) {
         static const bool pairs = bvhPacket16Supported();
         int k = 0;
         if (pairs && !bvh.wideNodes.empty()) {
@@ -146,25 +151,32 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
 
 } // namespace
 
-bool tracesInBlocks(const Bvh& bvh) {
-    // Frustums pay where a scene is a few large triangles (raylab-bench, 1 thread: the lab's box
-    // 1.2x the packets' rays per second); for meshes of tens of thousands of triangles the walks
-    // that end over kMaxFrustumCandidates cost more than they save (bunny, dragon and Sponza 0.92
-    // to 0.95x), so those are traced packet by packet. Nothing was measured in between.
+BlockTracing tracingFor(const Bvh& bvh) {
+    // 16-ray packets (AVX-512) are faster than frustums on every scene measured (raylab-bench, 1
+    // thread: the lab's box 1.35x, 156 against 116 Mrays/s). Without them, frustums pay where a
+    // scene is a few large triangles (the box 1.2x the 8-ray packets' rays per second); for
+    // meshes of tens of thousands of triangles the walks that end over kMaxFrustumCandidates cost
+    // more than they save (bunny, dragon and Sponza 0.92 to 0.95x). Nothing was measured in
+    // between.
     constexpr std::size_t kMaxFrustumSceneTriangles = 1024;
     static const bool simd = bvhSimdSupported();
-    return simd && !bvh.wideNodes.empty() && bvh.leafReferences <= kMaxFrustumSceneTriangles;
+    static const bool packets16 = bvhPacket16Supported();
+    return simd && !packets16 && !bvh.wideNodes.empty() &&
+                   bvh.leafReferences <= kMaxFrustumSceneTriangles
+               ? BlockTracing::Frustums
+               : BlockTracing::Packets;
 }
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts) {
-    shadeBlock(scene, bvh, settings, nullptr, ImageRect{}, rays, count, radiance, counts);
+                   const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts,
+                   BlockTracing tracing) {
+    shadeBlock(scene, bvh, settings, nullptr, ImageRect{}, rays, count, radiance, counts, tracing);
 }
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
-                   int count, RadiancePacket* radiance, RayCounts& counts) {
-    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts);
+                   int count, RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing) {
+    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts, tracing);
 }
 
 } // namespace raylab
