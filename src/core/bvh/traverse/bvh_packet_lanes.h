@@ -7,6 +7,7 @@
 #include "bvh/bvh.h"
 #include "bvh/traverse/bvh_box_ray.h"
 #include "bvh/traverse/bvh_packet_setup.h"
+#include "bvh/traverse/bvh_wide_refs.h"
 #include "triangle_intersection.h"
 
 namespace raylab::packet_lanes {
@@ -43,31 +44,6 @@ inline bool intersectLane(const BvhTriangleBlock& block, int tri, const Ray& ray
 // triangle have equal vertices too. Either way testing it again cannot change an answer.
 inline bool repeatsFirst(const BvhTriangleBlock& block, int tri) {
     return tri > 0 && block.sceneIndex[tri] == block.sceneIndex[0];
-}
-
-inline bool isLeaf(uint32_t ref) { return (ref & kWideLeafFlag) != 0; }
-inline uint32_t firstBlock(uint32_t ref) { return ref & kWideFirstBlockMask; }
-inline uint32_t blockCount(uint32_t ref) { return ((ref & ~kWideLeafFlag) >> kWideBlockShift) + 1; }
-
-// Asks the caches for what visiting child reference `ref` reads first: an inner node's four
-// lines, or a leaf's first triangle block (five lines). A packet calls it for each child it will
-// visit, as soon as it knows, so that the fetches of the children it pushes overlap the work on
-// the one it goes on with. Measured on camera and shadow rays, 1 thread: 16-ray packets, the
-// dragon 1.14x, the bunny and Sponza 1.02-1.03x; 8-ray packets, the dragon 1.10x. Prefetching
-// every block of a leaf gained nothing more; single rays gained nothing (their bounce rays lost).
-inline void prefetchChild(const Bvh& bvh, uint32_t ref) {
-    const char* first;
-    int lines;
-    if (isLeaf(ref)) {
-        first = reinterpret_cast<const char*>(&bvh.triangleBlocks[firstBlock(ref)]);
-        lines = sizeof(BvhTriangleBlock) / 64;
-    } else {
-        first = reinterpret_cast<const char*>(&bvh.wideNodes[ref]);
-        lines = sizeof(BvhWideNode) / 64;
-    }
-    for (int i = 0; i < lines; ++i) {
-        _mm_prefetch(first + 64 * i, _MM_HINT_T0);
-    }
 }
 
 // The closest hit per lane so far: (t, triangle) decides; u and v are held as e1 and e2 until

@@ -16,6 +16,7 @@
 
 #include "bvh/build/bvh_collapse.h"
 #include "bvh/traverse/bvh_box_ray.h"
+#include "bvh/traverse/bvh_wide_refs.h"
 #include "watertight_avx2.h"
 
 #include <cmath>
@@ -130,10 +131,6 @@ inline bool intersectLane(const BvhTriangleBlock& block, int lane, const Ray& ra
     }
     return intersectTriangle(w, p[0], p[1], p[2], t, u, v);
 }
-
-inline bool isLeaf(uint32_t ref) { return (ref & kWideLeafFlag) != 0; }
-inline uint32_t firstBlock(uint32_t ref) { return ref & kWideFirstBlockMask; }
-inline uint32_t blockCount(uint32_t ref) { return ((ref & ~kWideLeafFlag) >> kWideBlockShift) + 1; }
 
 struct StackEntry {
     uint32_t ref;
