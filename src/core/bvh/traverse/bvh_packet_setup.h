@@ -47,20 +47,19 @@ inline void rayPermutation(int kz, bool negative, int k[3]) {
 // lane by lane: kz is the axis of the largest |d| (the first of equal ones as there), kx and ky
 // follow cyclically and swap when d[kz] < 0.
 RAYLAB_AVX2 inline void makePacket(const RayPacket& rays, PacketRays& p) {
-    // Loaded straight into p's fields: a local copy of them, copied on into p, may be moved as
-    // wider registers than it was stored as, which stalls on store forwarding.
-    __m256 d[3];
+    __m256 f[8];
     for (int a = 0; a < 3; ++a) {
-        p.origin[a] = _mm256_load_ps(rays.origin[a]);
-        d[a] = _mm256_load_ps(rays.direction[a]);
+        f[a] = _mm256_load_ps(rays.origin[a]);
+        f[3 + a] = _mm256_load_ps(rays.direction[a]);
     }
-    p.tMin = _mm256_load_ps(rays.tMin);
-    p.tMax = _mm256_load_ps(rays.tMax);
-    const __m256* o = p.origin;
+    f[6] = _mm256_load_ps(rays.tMin);
+    f[7] = _mm256_load_ps(rays.tMax);
+    const __m256* o = f;
+    const __m256* d = f + 3;
     const __m256 zero = _mm256_setzero_ps();
     const __m256 valid = _mm256_and_ps(
         _mm256_and_ps(_mm256_and_ps(isFinite8(o[0]), isFinite8(o[1])),
-                      _mm256_and_ps(isFinite8(o[2]), _mm256_cmp_ps(p.tMin, p.tMax, _CMP_ORD_Q))),
+                      _mm256_and_ps(isFinite8(o[2]), _mm256_cmp_ps(f[6], f[7], _CMP_ORD_Q))),
         _mm256_and_ps(
             _mm256_and_ps(isFinite8(d[0]), isFinite8(d[1])),
             _mm256_and_ps(isFinite8(d[2]),
@@ -112,6 +111,7 @@ RAYLAB_AVX2 inline void makePacket(const RayPacket& rays, PacketRays& p) {
     const __m256 one = _mm256_set1_ps(1.0f);
     const __m256 tiny = _mm256_set1_ps(1e-30f);
     for (int a = 0; a < 3; ++a) {
+        p.origin[a] = o[a];
         // boxDirection (bvh_box_ray.h): +-1e-30 with d's sign where |d| < 1e-30.
         const __m256 small = _mm256_cmp_ps(_mm256_andnot_ps(signMask, d[a]), tiny, _CMP_LT_OQ);
         const __m256 boxD =
@@ -124,6 +124,8 @@ RAYLAB_AVX2 inline void makePacket(const RayPacket& rays, PacketRays& p) {
     p.shearX = _mm256_div_ps(d[kx], d[bestKz]);
     p.shearY = _mm256_div_ps(d[ky], d[bestKz]);
     p.shearZ = _mm256_div_ps(one, d[bestKz]);
+    p.tMin = f[6];
+    p.tMax = f[7];
 }
 
 } // namespace raylab
