@@ -11,13 +11,14 @@
 // Each node's children are prefetched as soon as they are taken (prefetchChild).
 // Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
-// Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with their helpers on 16 lanes: both
-// halves are set up by makePacket and traced together only when they share the ray permutation
-// (else each is its own 8-lane packet); triangles go through intersectTriangle16 /
-// keepTriangle16 / hitLanes16, so t, u, v and the triangle are intersectTriangle's, lanes with an
-// edge function of exactly zero go to intersectTriangle itself, a lane keeps the minimum of (t,
-// triangle index), and a box is dropped for a lane only when it starts beyond that lane's own
-// closest hit (kBoxRoundUp): every culling test above is a superset of the lanes' own slab tests.
+// Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with their helpers on 16 lanes: the
+// lanes traced are those makePacket would pick for each half (makePacket16), and the halves are
+// traced together only when they share the ray permutation (else each is its own 8-lane packet);
+// triangles go through intersectTriangle16 / keepTriangle16 / hitLanes16, so t, u, v and the
+// triangle are intersectTriangle's, lanes with an edge function of exactly zero go to
+// intersectTriangle itself, a lane keeps the minimum of (t, triangle index), and a box is dropped
+// for a lane only when it starts beyond that lane's own closest hit (kBoxRoundUp): every culling
+// test above is a superset of the lanes' own slab tests.
 
 // GCC 12's AVX-512 intrinsics start from _mm512_undefined_*() values, which -Wuninitialized
 // reports inside the intrinsics' headers: silenced before the first include of them.
