@@ -80,7 +80,7 @@ void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& s
     rays.shadowPrimary.clear();
     for (std::size_t tile = 0; tile < rays.tiles(); ++tile) {
         for (std::size_t i = rays.primaryOffset[tile]; i < rays.primaryOffset[tile + 1]; ++i) {
-            if (!hits[i].found()) {
+            if (!settings.shadows || !hits[i].found()) {
                 continue;
             }
             // As directLight in core/lab_shading.cpp.

@@ -68,7 +68,8 @@ int tileIndex(int x0, int y0, int width, int tileSize);
 // The primary rays of settings.camera at settings.width x settings.height.
 BenchRays makePrimaryRays(const RenderSettings& settings, int tileSize = 32);
 
-// Adds the shadow rays of the primary hits (hits[i] belongs to rays.primary[i]).
+// Adds the shadow rays of the primary hits (hits[i] belongs to rays.primary[i]); none when
+// settings.shadows is off.
 void addShadowRays(BenchRays& rays, const std::vector<Hit>& hits, const Scene& scene,
                    const RenderSettings& settings);
 

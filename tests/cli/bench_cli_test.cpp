@@ -69,6 +69,8 @@ double mrays(const nlohmann::json& figures, const char* threads) {
     return figures.at(threads).at("mrays_per_s").get<double>();
 }
 
+bool hasEmbree(const nlohmann::json& j) { return !j.at("embree").is_null(); }
+
 // The keys every run with packets prints, and the blocks' figures and checks.
 void expectBlockReport(const nlohmann::json& j) {
     for (const char* key : {"scene", "primary_rays", "shadow_rays", "raylab", "packets",
@@ -108,6 +110,27 @@ TEST(BenchCli, BoxBlocksMatchPacketsWithPartialBlocks) {
     // The box: every block's frustum holds few triangles.
     EXPECT_EQ(j.at("camera_blocks_through_candidates").get<int>(), 8 * 4);
     EXPECT_GT(j.at("shadow_blocks").get<int>(), 0);
+}
+
+// --no-shadows: camera rays only, every tracer and Embree still agreeing.
+TEST(BenchCli, NoShadowsTracesNoShadowRays) {
+    const Outcome with = runBench("", "--width 40 --height 24 --frames 1 --threads 1 --json");
+    const Outcome without =
+        runBench("", "--width 40 --height 24 --frames 1 --threads 1 --no-shadows --json");
+    ASSERT_EQ(with.exitCode, 0) << with.out;
+    ASSERT_EQ(without.exitCode, 0) << without.out;
+    const nlohmann::json a = nlohmann::json::parse(with.out);
+    const nlohmann::json b = nlohmann::json::parse(without.out);
+    EXPECT_GT(a.at("shadow_rays").get<int>(), 0);
+    EXPECT_EQ(b.at("shadow_rays").get<int>(), 0);
+    EXPECT_EQ(b.at("primary_rays").get<int>(), 40 * 24);
+    EXPECT_EQ(b.at("raylab").at("rays").get<int>(), 40 * 24);
+    EXPECT_EQ(b.at("packet_mismatches").get<int>(), 0);
+    EXPECT_EQ(b.at("packet16_mismatches").get<int>(), 0);
+    if (hasEmbree(b)) {
+        EXPECT_EQ(b.at("disagreeing_hits").get<int>(), 0);
+        EXPECT_EQ(b.at("disagreeing_shadow_rays").get<int>(), 0);
+    }
 }
 
 TEST(BenchCli, NoBlocksKeepsTheOtherKeys) {
@@ -229,8 +252,6 @@ void expectEmbreeReport(const nlohmann::json& j) {
     EXPECT_GT(embree.at("build_ms").get<double>(), 0.0);
     EXPECT_EQ(mrays(embree, "one_thread"), mrays(j.at("embree_best"), "one_thread"));
 }
-
-bool hasEmbree(const nlohmann::json& j) { return !j.at("embree").is_null(); }
 
 TEST(BenchCli, PrimaryWorkloadReportsEveryEmbreeCall) {
     // 38 x 22: 4 x 4 and 8 x 8 pixel tiles cut at the right and bottom edges. (An odd width
