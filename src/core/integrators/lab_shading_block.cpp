@@ -153,10 +153,10 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
 
 BlockTracing tracingFor(const Bvh& bvh) {
     // 16-ray packets (AVX-512) are faster than frustums on every scene measured (raylab-bench, 1
-    // thread: the lab's box 1.35x, 156 against 116 Mrays/s). Without them, frustums pay where a
-    // scene is a few large triangles (the box 1.2x the 8-ray packets' rays per second); for
-    // meshes of tens of thousands of triangles the walks that end over kMaxFrustumCandidates cost
-    // more than they save (bunny, dragon and Sponza 0.92 to 0.95x). Nothing was measured in
+    // thread: the lab's box 1.13-1.17x, 155-156 against 133-138 Mrays/s). Without them, frustums
+    // pay where a scene is a few large triangles (the box 1.2x the 8-ray packets' rays per second);
+    // for meshes of tens of thousands of triangles the walks that end over kMaxFrustumCandidates
+    // cost more than they save (bunny, dragon and Sponza 0.92 to 0.95x). Nothing was measured in
     // between.
     constexpr std::size_t kMaxFrustumSceneTriangles = 1024;
     static const bool simd = bvhSimdSupported();
