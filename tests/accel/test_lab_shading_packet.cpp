@@ -1,7 +1,6 @@
 // shadeLab8 (packets of camera and shadow rays) against shadeLab, pixel for pixel.
 
 #include "accel_scenes.h"
-#include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/lab_shading.h"
@@ -161,15 +160,13 @@ TEST(LabShadingPacket, BlocksEqualPackets) {
     }
 }
 
-// The renderer's rule: frustums only for small scenes on CPUs without the 16-ray AVX-512
-// packets, and never for a mesh of thousands of triangles.
+// The renderer's rule: frustums for small scenes where the CPU has AVX2, never for a mesh of
+// thousands of triangles.
 TEST(LabShadingPacket, TracingForTheScene) {
     const Bvh box = buildBvh(makeCornellBox());
     const Bvh soup = buildBvh(makeTriangleSoup(5000, 0.1f, 31));
     EXPECT_EQ(tracingFor(soup), BlockTracing::Packets);
-    EXPECT_EQ(tracingFor(box), bvhSimdSupported() && !bvhPacket16Supported()
-                                   ? BlockTracing::Frustums
-                                   : BlockTracing::Packets);
+    EXPECT_EQ(tracingFor(box), bvhSimdSupported() ? BlockTracing::Frustums : BlockTracing::Packets);
 }
 
 // tilePixel lays a block's 8 packets out as four 4 x 4 tiles: every pixel of the 8 x 8 block

@@ -152,17 +152,16 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
 } // namespace
 
 BlockTracing tracingFor(const Bvh& bvh) {
-    // 16-ray packets (AVX-512) are faster than frustums on every scene measured (raylab-bench, 1
-    // thread: the lab's box 1.13-1.17x, 155-156 against 133-138 Mrays/s). Without them, frustums
-    // pay where a scene is a few large triangles (the box 1.2x the 8-ray packets' rays per second);
-    // for meshes of tens of thousands of triangles the walks that end over kMaxFrustumCandidates
-    // cost more than they save (bunny, dragon and Sponza 0.92 to 0.95x). Nothing was measured in
-    // between.
+    // Frustums pay where a scene is a few large triangles (the lab's box: raylab-bench's renderer
+    // passes 1.2x the 8-ray packets' samples per second, and 1.08-1.14x the 16-ray packets' on
+    // 1 thread, though the bench traces the box's rays alone 1.13-1.17x faster in 16-ray packets
+    // than in frustum blocks: the blocks share their shading set-up as well). For meshes of tens
+    // of thousands of triangles the walks that end over kMaxFrustumCandidates cost more than they
+    // save (bunny, dragon and Sponza 0.92 to 0.95x), so those are traced packet by packet.
+    // Nothing was measured in between.
     constexpr std::size_t kMaxFrustumSceneTriangles = 1024;
     static const bool simd = bvhSimdSupported();
-    static const bool packets16 = bvhPacket16Supported();
-    return simd && !packets16 && !bvh.wideNodes.empty() &&
-                   bvh.leafReferences <= kMaxFrustumSceneTriangles
+    return simd && !bvh.wideNodes.empty() && bvh.leafReferences <= kMaxFrustumSceneTriangles
                ? BlockTracing::Frustums
                : BlockTracing::Packets;
 }
