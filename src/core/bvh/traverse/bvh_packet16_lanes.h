@@ -198,8 +198,7 @@ RAYLAB_AVX512 inline void keepCloser16(PacketBest16& best, const LaneHits16& h, 
     best.triangle = _mm512_mask_mov_epi32(best.triangle, better, candidate);
 }
 
-// Tests the exact-fallback lanes of triangle `tri` with intersectTriangle itself and keeps the
-// hits that are closer.
+// Tests the exact-fallback lanes of triangle `tri` (keepExactLane) and keeps the closer hits.
 RAYLAB_AVX512 inline void keepExact16(PacketBest16& best, const BvhTriangleBlock& block, int tri,
                                       const PacketRays16& p, unsigned lanes) {
     alignas(64) float bt[kPacket16Size], e1[kPacket16Size], e2[kPacket16Size], det[kPacket16Size];
@@ -209,18 +208,10 @@ RAYLAB_AVX512 inline void keepExact16(PacketBest16& best, const BvhTriangleBlock
     _mm512_store_ps(e2, best.e2);
     _mm512_store_ps(det, best.det);
     _mm512_store_si512(bi, best.triangle);
-    const uint32_t index = block.sceneIndex[tri];
     for (unsigned m = lanes; m != 0; m &= m - 1) {
         const int l = __builtin_ctz(m);
-        float t, u, v;
-        if (intersectLane(block, tri, p.rays[l / kPacketSize]->ray(l % kPacketSize), t, u, v) &&
-            (t < bt[l] || (t == bt[l] && index < bi[l]))) {
-            bt[l] = t;
-            e1[l] = u;
-            e2[l] = v;
-            det[l] = 1.0f;
-            bi[l] = index;
-        }
+        keepExactLane(block, tri, p.rays[l / kPacketSize]->ray(l % kPacketSize), l, bt, e1, e2, det,
+                      bi);
     }
     best.t = _mm512_load_ps(bt);
     best.e1 = _mm512_load_ps(e1);

@@ -99,7 +99,24 @@ RAYLAB_AVX2 inline void writeBest(const PacketBest& best, unsigned lanes, HitPac
                                           best.triangle, found));
 }
 
-// Tests lane l's exact-fallback triangle and keeps it when closer.
+// Lane l's exact-fallback test of triangle `tri` (intersectTriangle itself, for `ray`), kept in
+// the lane's entries of the best-hit arrays when closer by the (t, triangle index) rule; u and v
+// are final, so det is 1.
+inline void keepExactLane(const BvhTriangleBlock& block, int tri, const Ray& ray, int l, float* t,
+                          float* e1, float* e2, float* det, uint32_t* triangle) {
+    const uint32_t index = block.sceneIndex[tri];
+    float tHit, u, v;
+    if (intersectLane(block, tri, ray, tHit, u, v) &&
+        (tHit < t[l] || (tHit == t[l] && index < triangle[l]))) {
+        t[l] = tHit;
+        e1[l] = u;
+        e2[l] = v;
+        det[l] = 1.0f;
+        triangle[l] = index;
+    }
+}
+
+// Tests the exact-fallback lanes of triangle `tri` (keepExactLane) and keeps the closer hits.
 RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& block, int tri,
                                   const RayPacket& rays, unsigned lanes) {
     alignas(32) float bt[kWideLanes], e1[kWideLanes], e2[kWideLanes], det[kWideLanes];
@@ -109,18 +126,9 @@ RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& bloc
     _mm256_store_ps(e2, best.e2);
     _mm256_store_ps(det, best.det);
     _mm256_store_si256(reinterpret_cast<__m256i*>(bi), best.triangle);
-    const uint32_t index = block.sceneIndex[tri];
     for (unsigned m = lanes; m != 0; m &= m - 1) {
         const int l = __builtin_ctz(m);
-        float t, u, v;
-        if (intersectLane(block, tri, rays.ray(l), t, u, v) &&
-            (t < bt[l] || (t == bt[l] && index < bi[l]))) {
-            bt[l] = t;
-            e1[l] = u;
-            e2[l] = v;
-            det[l] = 1.0f;
-            bi[l] = index;
-        }
+        keepExactLane(block, tri, rays.ray(l), l, bt, e1, e2, det, bi);
     }
     best.t = _mm256_load_ps(bt);
     best.e1 = _mm256_load_ps(e1);
