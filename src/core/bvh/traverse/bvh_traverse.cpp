@@ -254,6 +254,22 @@ bool anyHit(const Bvh& bvh, const Ray& ray) {
     return anyHitWide(bvh, ray);
 }
 
+bool interleavesRays(const Bvh& bvh) {
+    const std::size_t bytes = bvh.wideNodes.size() * sizeof(BvhWideNode) +
+                              bvh.triangleBlocks.size() * sizeof(BvhTriangleBlock);
+    return !bvh.wideNodes.empty() && bytes > kInterleaveFromBytes;
+}
+
+void closestHits(const Bvh& bvh, const Ray* rays, std::size_t count, Hit* hits) {
+    if (interleavesRays(bvh)) {
+        closestHitsInterleaved(bvh, rays, count, hits);
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        hits[i] = closestHit(bvh, rays[i]);
+    }
+}
+
 bool bvhSimdSupported() {
 #if defined(__x86_64__) || defined(__i386__)
     return __builtin_cpu_supports("avx2");

@@ -5,6 +5,8 @@
 #include "bvh/bvh.h"
 #include "triangle_intersection.h"
 
+#include <cstddef>
+
 namespace raylab {
 
 // Same contracts and answers as closestHitScalar / anyHitScalar.
@@ -14,5 +16,14 @@ bool anyHitWide(const Bvh& bvh, const Ray& ray);
 // The same, adding what they visit to `cost`.
 Hit closestHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
 bool anyHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
+
+// How many rays closestHitsInterleaved walks at once. On the dragon's bounce rays, 1 thread,
+// 8 walks traced 3.8-3.9 Mrays/s, 12 walks 3.9-4.0, 16 walks 3.8-3.9; one by one 3.2-3.3.
+inline constexpr int kInterleavedRays = 12;
+
+// hits[i] = closestHitWide(bvh, rays[i]) for i < count, bit for bit, the rays walked
+// kInterleavedRays at a time: one node or leaf of each in turn, each walk's next node prefetched
+// as soon as it is known, so that one ray's wait on memory overlaps the others' work.
+void closestHitsInterleaved(const Bvh& bvh, const Ray* rays, std::size_t count, Hit* hits);
 
 } // namespace raylab
