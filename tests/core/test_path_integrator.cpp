@@ -3,8 +3,10 @@
 // of the estimate, measured from the film's per-pixel second moments.
 
 #include "core/bvh/bvh.h"
+#include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/path_integrator.h"
+#include "core/lights/emitters.h"
 #include "core/render/film.h"
 #include "core/render/image_error.h"
 #include "core/render/renderer.h"
@@ -15,6 +17,7 @@
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace raylab {
 namespace {
@@ -357,6 +360,74 @@ TEST(PathIntegrator, SameBytesOnAnyThreadCountAndRepeatable) {
     const Framebuffer independent = render(scene, bvh, s);
     EXPECT_NE(0, std::memcmp(one.pixels.data(), independent.pixels.data(),
                              one.pixels.size() * sizeof(glm::vec3)));
+}
+
+// tracePaths (a tile's paths a bounce at a time, the renderer's) against tracePath one by one:
+// the same radiance, N and hit bit for bit, and the same ray counts, with emitters, a sphere
+// light, Russian roulette (many bounces) and each switch of the lab.
+TEST(PathIntegrator, PathsTracedTogetherEqualPathsTracedAlone) {
+    Scene scene = makeCornellBox();
+    scene.materials.push_back({"lamp", glm::vec3(0.5f), glm::vec3(4.0f)});
+    test::addSquareZ(scene, {0.0f, 0.5f, 0.5f}, 0.2f,
+                     static_cast<uint32_t>(scene.materials.size() - 1));
+    const Bvh bvh = buildBvh(scene);
+    const EmitterTable emitters = buildEmitterTable(scene);
+    RenderSettings base;
+    base.integrator = Integrator::Path;
+    base.light.radius = 0.1f;
+    base.maxBounces = 12;
+    base.width = 24;
+    base.height = 20;
+    RenderSettings noIndirect = base, noShadows = base, oneBounce = base;
+    noIndirect.indirect = false;
+    noShadows.shadows = false;
+    oneBounce.maxBounces = 1;
+    for (const RenderSettings& s : {base, noIndirect, noShadows, oneBounce}) {
+        const PrimaryRays camera(s.camera, s.width, s.height);
+        std::vector<Ray> rays;
+        std::vector<PixelSampler> samplers;
+        for (uint32_t sample = 0; sample < 3; ++sample) {
+            for (int y = 0; y < s.height; ++y) {
+                for (int x = 0; x < s.width; ++x) {
+                    const PixelSampler sampler(s.sampler, static_cast<uint32_t>(y * s.width + x),
+                                               sample);
+                    const glm::vec2 offset = sampler.get2D(0);
+                    rays.push_back(camera.through(static_cast<float>(x) + offset.x,
+                                                  static_cast<float>(y) + offset.y));
+                    samplers.push_back(sampler);
+                }
+            }
+        }
+        RayCounts alone, together;
+        std::vector<PathSample> samples(rays.size());
+        PathBatch batch;
+        tracePaths(scene, bvh, emitters, s, rays, samplers, samples, together, batch);
+        int hits = 0, bounced = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const PathSample one = tracePath(scene, bvh, emitters, s, rays[i], samplers[i], alone);
+            ASSERT_EQ(one.hit, samples[i].hit) << i;
+            ASSERT_EQ(0, std::memcmp(&one.radiance, &samples[i].radiance, sizeof(glm::vec3))) << i;
+            ASSERT_EQ(0, std::memcmp(&one.indirect, &samples[i].indirect, sizeof(glm::vec3))) << i;
+            hits += one.hit ? 1 : 0;
+            bounced += one.indirect != glm::vec3(0.0f) ? 1 : 0;
+        }
+        EXPECT_EQ(alone.primary, together.primary);
+        EXPECT_EQ(alone.shadow, together.shadow);
+        EXPECT_EQ(alone.bounce, together.bounce);
+        EXPECT_EQ(alone.primary, rays.size());
+        EXPECT_GT(hits, static_cast<int>(rays.size()) / 2);
+        if (s.indirect) {
+            EXPECT_GT(bounced, hits / 2);
+            if (s.maxBounces == 1) { // one bounce from every hit, no roulette before bounce 4
+                EXPECT_EQ(alone.bounce, static_cast<uint64_t>(hits));
+            } else {
+                EXPECT_GT(alone.bounce, alone.primary);
+            }
+        } else {
+            EXPECT_EQ(bounced, 0);
+            EXPECT_EQ(alone.bounce, 0u);
+        }
+    }
 }
 
 TEST(PathIntegrator, CountsCameraShadowAndBounceRays) {

@@ -20,7 +20,9 @@
 #include "sampling/sampler.h"
 #include "scene.h"
 
+#include <cstdint>
 #include <glm/vec3.hpp>
+#include <span>
 #include <vector>
 
 namespace raylab {
@@ -46,6 +48,18 @@ struct PathVertexRecord {
                             // the reflectances between it and the camera)
 };
 
+// A path between its bounces (tracePaths keeps one per path; its fields are the integrator's).
+struct PathState {
+    SurfacePoint first;          // where the camera ray landed
+    SurfacePoint s;              // the last surface reached
+    glm::vec3 emitted{0.0f};     // E at the first surface
+    glm::vec3 firstDirect{0.0f}; // D at the first surface
+    glm::vec3 indirect{0.0f};    // the estimate of N at the first surface so far
+    glm::vec3 weight{1.0f};      // the reflectances between the first surface and s
+    bool hit = false;            // the camera ray hit a surface
+    bool open = false;           // another bounce may follow
+};
+
 // How emitting triangles reach D: both ways weighted by MIS (renders), or one way alone with
 // weight 1 (tests check that the three agree, and that MIS has the lowest variance).
 enum class EmitterStrategy { Mis, LightSamplingOnly, BounceOnly };
@@ -67,5 +81,24 @@ PathSample tracePath(const Scene& scene, const Bvh& bvh, const EmitterTable& emi
                      const PixelSampler& sampler, RayCounts& counts,
                      EmitterStrategy strategy = EmitterStrategy::Mis,
                      std::vector<PathVertexRecord>* record = nullptr);
+
+// Room for tracePaths' paths between their bounces. tracePaths only resizes it: a caller may
+// keep one for many calls (the renderer keeps one per tile).
+struct PathBatch {
+    std::vector<PathState> paths;
+    std::vector<Hit> hits;
+    std::vector<Ray> rays;
+    std::vector<uint32_t> waiting; // indices of the paths whose next bounce is due
+};
+
+// tracePath for many paths at once (the renderer's: one per pixel of a tile), with the same
+// answers and counts bit for bit: samples[i] = tracePath(..., cameraRays[i], samplers[i], ...)
+// with EmitterStrategy::Mis. The paths advance a bounce at a time, each bounce's rays traced
+// together by closestHits (bvh.h), which interleaves them on large scenes. The three spans have
+// one length.
+void tracePaths(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
+                const RenderSettings& settings, std::span<const Ray> cameraRays,
+                std::span<const PixelSampler> samplers, std::span<PathSample> samples,
+                RayCounts& counts, PathBatch& batch);
 
 } // namespace raylab

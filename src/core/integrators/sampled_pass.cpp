@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <cassert>
+#include <vector>
 
 namespace raylab {
 
@@ -35,6 +36,19 @@ glm::vec3 shadeLabSampled(const Scene& scene, const Bvh& bvh, const RenderSettin
     return emitted + labRadiance(settings, s.rho, direct);
 }
 
+namespace {
+
+// A tile's path samples, traced together: their camera rays and samplers, and where each adds.
+struct PathTileBatch {
+    std::vector<Ray> cameraRays;
+    std::vector<PixelSampler> samplers;
+    std::vector<std::size_t> kept;
+    std::vector<PathSample> samples;
+    PathBatch paths;
+};
+
+} // namespace
+
 bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitters,
                  const RenderSettings& settings, Film& film, RayCounts* counts,
                  const PassOptions& options) {
@@ -49,6 +63,20 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
             const uint32_t sampleIndex = passSample.index;
             const Film::Write how = passSample.how;
             const bool first = how == Film::Write::First;
+            // What a sample adds to its pixel's sums (kept: film.indexOf), n the path
+            // integrator's N and whether it hit.
+            const auto add = [&](std::size_t kept, const glm::vec3& value, const glm::vec4& n) {
+                if (!indirect.empty()) {
+                    indirect[kept] = first ? n : indirect[kept] + n;
+                }
+                film.write(kept, value, how);
+                if (!squares.empty()) {
+                    squares[kept] = first ? value * value : squares[kept] + value * value;
+                }
+            };
+            // The path integrator's beauty samples are traced together (tracePaths).
+            const bool batched = path && settings.view == View::Beauty;
+            PathTileBatch batch;
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     // Samples are drawn per pixel of the whole image; sums kept per pixel of the
@@ -68,25 +96,28 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
                     }
                     const Ray ray = rays.through(static_cast<float>(x) + offset.x,
                                                  static_cast<float>(y) + offset.y);
-                    glm::vec3 value;
-                    glm::vec4 n(0.0f); // the path integrator's N and whether it hit
-                    if (settings.view != View::Beauty) {
-                        value = shadeView(scene, bvh, emitters, settings, ray, sampler, tileCounts);
-                    } else if (path) {
-                        const PathSample sample =
-                            tracePath(scene, bvh, emitters, settings, ray, sampler, tileCounts);
-                        value = sample.radiance;
-                        n = glm::vec4(sample.indirect, sample.hit ? 1.0f : 0.0f);
+                    if (batched) {
+                        batch.cameraRays.push_back(ray);
+                        batch.samplers.push_back(sampler);
+                        batch.kept.push_back(kept);
+                    } else if (settings.view != View::Beauty) {
+                        add(kept,
+                            shadeView(scene, bvh, emitters, settings, ray, sampler, tileCounts),
+                            glm::vec4(0.0f));
                     } else {
-                        value = shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts);
+                        add(kept, shadeLabSampled(scene, bvh, settings, ray, sampler, tileCounts),
+                            glm::vec4(0.0f));
                     }
-                    if (!indirect.empty()) {
-                        indirect[kept] = first ? n : indirect[kept] + n;
-                    }
-                    film.write(kept, value, how);
-                    if (!squares.empty()) {
-                        squares[kept] = first ? value * value : squares[kept] + value * value;
-                    }
+                }
+            }
+            if (batched) {
+                batch.samples.resize(batch.cameraRays.size());
+                tracePaths(scene, bvh, emitters, settings, batch.cameraRays, batch.samplers,
+                           batch.samples, tileCounts, batch.paths);
+                for (std::size_t i = 0; i < batch.samples.size(); ++i) {
+                    const PathSample& sample = batch.samples[i];
+                    add(batch.kept[i], sample.radiance,
+                        glm::vec4(sample.indirect, sample.hit ? 1.0f : 0.0f));
                 }
             }
         });
