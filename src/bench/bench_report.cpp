@@ -199,7 +199,7 @@ void printText(std::ostream& out, const BenchReport& r) {
     }
     if (r.workload == Workload::Bounce) {
         out << "the bounce rays alone (" << r.bounceRays << "):\n";
-        printRow(out, "raylab (1 ray)", r.bounceRaylab);
+        printRow(out, "raylab (closestHits)", r.bounceRaylab);
         if (r.hasEmbree) {
             for (std::size_t c = 0; c < kEmbreeCalls; ++c) {
                 printRow(out, kEmbreeCallText[c].label, r.bounceEmbree[c]);
@@ -247,7 +247,7 @@ void printText(std::ostream& out, const BenchReport& r) {
         << kEmbreeCallText[bestEmbreeCall(r, false)].call << " (" << threadsText(r) << ")\n";
     printRatio(out, (raylab + " / Embree's best").c_str(), r.raylab, bestFigures(r), r);
     if (r.workload == Workload::Bounce) {
-        printRatio(out, "bounce rays, raylab single rays / Embree rtcIntersect1", r.bounceRaylab,
+        printRatio(out, "bounce rays, raylab closestHits / Embree rtcIntersect1", r.bounceRaylab,
                    r.bounceEmbree[0], r);
     }
     for (std::size_t c = 0; c < kEmbreeCalls; ++c) {
@@ -362,7 +362,7 @@ void printJson(std::ostream& out, const BenchReport& r) {
         }
     }
     if (r.workload == Workload::Bounce) {
-        out << ",\n \"bounce\": {\"rays\": " << r.bounceRays << ", \"raylab_single_ray\": ";
+        out << ",\n \"bounce\": {\"rays\": " << r.bounceRays << ", \"raylab\": ";
         jsonFigures(out, r.bounceRaylab);
         if (r.hasEmbree) {
             for (std::size_t c = 0; c < kEmbreeCalls; ++c) {
@@ -372,7 +372,7 @@ void printJson(std::ostream& out, const BenchReport& r) {
                 jsonRatios(out, r.bounceRaylab, r.bounceEmbree[c]);
                 out << "}";
             }
-            // The goal's ratio: raylab's single rays over Embree's single-ray calls.
+            // The goal's ratio: raylab's closestHits over Embree's single-ray calls.
             jsonRatios(out, r.bounceRaylab, r.bounceEmbree[0]);
         }
         out << "}";

@@ -9,7 +9,8 @@
 // raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and, in the same turns, 8 x 8
 // pixel blocks through frustum candidates as the renderer does (core/bvh_frustum.h,
 // bench_blocks.h), the same blocks' rows two by two as packets of 16 rays (AVX-512 where the CPU
-// has it, as the renderer traces meshes) and single rays; bounce rays one by one in every case.
+// has it, as the renderer traces meshes) and single rays; bounce rays in every case as the path
+// integrator traces them (closestHits: interleaved walks on large scenes, else one by one).
 // Bench-only flags: BenchOptions in io/command_line.h. Exit codes: 2 usage, 1 other errors, too
 // many hits disagreeing with Embree, or packets, blocks, 16-ray packets and single rays not giving
 // identical answers.
@@ -183,9 +184,15 @@ int run(int argc, char** argv) {
     report.shadowRays = rays.shadow.size();
     report.bounceRays = rays.bounce.size();
 
-    // Bounce rays, one by one, in every raylab tracer (incoherent rays: the renderer would too).
+    // Bounce rays as the path integrator traces them, through closestHits (interleaved walks on
+    // large scenes, else one by one), in every raylab tracer; one by one with --scalar.
     auto traceBounces = [&](std::size_t tile) {
-        for (std::size_t j = rays.bounceOffset[tile]; j < rays.bounceOffset[tile + 1]; ++j) {
+        const std::size_t first = rays.bounceOffset[tile], last = rays.bounceOffset[tile + 1];
+        if (!flags.scalar) {
+            closestHits(bvh, &rays.bounce[first], last - first, &bounceHits[first]);
+            return;
+        }
+        for (std::size_t j = first; j < last; ++j) {
             bounceHits[j] = closest(rays.bounce[j]);
         }
     };

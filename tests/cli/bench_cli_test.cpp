@@ -301,7 +301,7 @@ TEST(BenchCli, BounceWorkloadTracesOneBounceRayPerHit) {
     // The bounce rays alone.
     const nlohmann::json& b = j.at("bounce");
     EXPECT_EQ(b.at("rays").get<std::size_t>(), bounce);
-    expectFigures(b.at("raylab_single_ray"), bounce, "bounce raylab_single_ray");
+    expectFigures(b.at("raylab"), bounce, "bounce raylab");
     if (!hasEmbree(j)) {
         GTEST_SKIP() << "raylab-bench was built without Embree";
     }
@@ -309,7 +309,7 @@ TEST(BenchCli, BounceWorkloadTracesOneBounceRayPerHit) {
     for (const char* call : kEmbreeCallKeys) {
         expectFigures(b.at(call), bounce, std::string("bounce ") + call);
     }
-    // The goal's ratio: raylab's single rays over Embree's single-ray calls.
+    // The goal's ratio: raylab's closestHits over Embree's single-ray calls.
     EXPECT_EQ(b.at("ratio_one_thread"), b.at("embree_single").at("ratio_one_thread"));
 }
 
