@@ -17,8 +17,8 @@ bool anyHitWide(const Bvh& bvh, const Ray& ray);
 Hit closestHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
 bool anyHitWideCounted(const Bvh& bvh, const Ray& ray, TraversalCost& cost);
 
-// How many rays closestHitsInterleaved walks at once. On the dragon's bounce rays, 1 thread,
-// 8 walks traced 3.8-3.9 Mrays/s, 12 walks 3.9-4.0, 16 walks 3.8-3.9; one by one 3.2-3.3.
+// How many rays closestHitsInterleaved walks at once. On the dragon's bounce rays, 1 thread: 12
+// walks 3.8 Mrays/s, 8 walks 3.6-3.7, one by one 3.1-3.3 (16 were no faster than 12).
 inline constexpr int kInterleavedRays = 12;
 
 // hits[i] = closestHitWide(bvh, rays[i]) for i < count, bit for bit, the rays walked
