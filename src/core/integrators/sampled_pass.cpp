@@ -45,6 +45,15 @@ struct PathTileBatch {
     std::vector<std::size_t> kept;
     std::vector<PathSample> samples;
     PathBatch paths;
+
+    // Room for the paths of `tile`, so that the pushes below never reallocate.
+    void reserveFor(const TileRect& tile) {
+        const std::size_t pixels = static_cast<std::size_t>(tile.x1 - tile.x0) *
+                                   static_cast<std::size_t>(tile.y1 - tile.y0);
+        cameraRays.reserve(pixels);
+        samplers.reserve(pixels);
+        kept.reserve(pixels);
+    }
 };
 
 } // namespace
@@ -77,6 +86,9 @@ bool sampledPass(const Scene& scene, const Bvh& bvh, const EmitterTable& emitter
             // The path integrator's beauty samples are traced together (tracePaths).
             const bool batched = path && settings.view == View::Beauty;
             PathTileBatch batch;
+            if (batched) {
+                batch.reserveFor(tile);
+            }
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     // Samples are drawn per pixel of the whole image; sums kept per pixel of the
