@@ -335,11 +335,17 @@ TEST(Emitters, TheCameraSeesAnEmittersFrontAsPiLeAndItsBackAsDark) {
     EXPECT_NEAR(front.radiance.z, kPi * 1.0, 1e-4);
 }
 
-TEST(PathIntegrator, SameBytesOnAnyThreadCountAndRepeatable) {
+// The lab's box with an emitting square (a lamp of Le 4) under its ceiling.
+Scene cornellBoxWithLamp() {
     Scene scene = makeCornellBox();
     scene.materials.push_back({"lamp", glm::vec3(0.5f), glm::vec3(4.0f)});
     test::addSquareZ(scene, {0.0f, 0.5f, 0.5f}, 0.2f,
                      static_cast<uint32_t>(scene.materials.size() - 1));
+    return scene;
+}
+
+TEST(PathIntegrator, SameBytesOnAnyThreadCountAndRepeatable) {
+    const Scene scene = cornellBoxWithLamp();
     const Bvh bvh = buildBvh(scene);
     RenderSettings s;
     s.integrator = Integrator::Path;
@@ -366,10 +372,7 @@ TEST(PathIntegrator, SameBytesOnAnyThreadCountAndRepeatable) {
 // the same radiance, N and hit bit for bit, and the same ray counts, with emitters, a sphere
 // light, Russian roulette (many bounces) and each switch of the lab.
 TEST(PathIntegrator, PathsTracedTogetherEqualPathsTracedAlone) {
-    Scene scene = makeCornellBox();
-    scene.materials.push_back({"lamp", glm::vec3(0.5f), glm::vec3(4.0f)});
-    test::addSquareZ(scene, {0.0f, 0.5f, 0.5f}, 0.2f,
-                     static_cast<uint32_t>(scene.materials.size() - 1));
+    const Scene scene = cornellBoxWithLamp();
     const Bvh bvh = buildBvh(scene);
     const EmitterTable emitters = buildEmitterTable(scene);
     RenderSettings base;
