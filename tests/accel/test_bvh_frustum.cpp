@@ -264,6 +264,46 @@ TEST(BvhFrustum, FarFromTheOriginStaysExact) {
     EXPECT_GT(cameraTally.hits, 3000);
 }
 
+// The tolerance scales with the largest |coordinate| of the BVH's node boxes (the build records
+// the vertices' largest, Bvh::largestCoordinate; the boxes reach boxPad further) or of the apex,
+// whichever is larger; an invalid triangle's far vertex counts for neither.
+TEST(BvhFrustum, ToleranceScalesWithTheNodeBoxesAndTheApex) {
+    Scene scene = makeTriangleSoup(200, 0.1f, 5);
+    for (Triangle& t : scene.triangles) {
+        t.v0 = t.v0 * 40.0f - glm::vec3(7.0f);
+        t.v1 = t.v1 * 40.0f - glm::vec3(7.0f);
+        t.v2 = t.v2 * 40.0f - glm::vec3(7.0f);
+    }
+    Triangle degenerate;
+    degenerate.v0 = degenerate.v1 = degenerate.v2 = glm::vec3(0.0f, 1e6f, 0.0f);
+    scene.triangles.push_back(degenerate);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i + 1 < scene.triangles.size(); ++i) {
+        for (const glm::vec3& v :
+             {scene.triangles[i].v0, scene.triangles[i].v1, scene.triangles[i].v2}) {
+            largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+        }
+    }
+    for (const bool simd : {true, false}) {
+        BvhBuildOptions options;
+        options.simd = simd;
+        options.keepBinaryNodes = true;
+        const Bvh bvh = buildBvh(scene, options);
+        ASSERT_EQ(bvh.skippedTriangles, 1u);
+        EXPECT_EQ(bvh.largestCoordinate, largest);
+        const Aabb root = bvh.bounds();
+        const float rootLargest =
+            std::max({std::fabs(root.lower.x), std::fabs(root.lower.y), std::fabs(root.lower.z),
+                      std::fabs(root.upper.x), std::fabs(root.upper.y), std::fabs(root.upper.z)});
+        // Within a few ulps of the root box's own largest coordinate.
+        EXPECT_NEAR(frustumTolerance(bvh, glm::vec3(0.0f)), 4e-5f * rootLargest,
+                    4e-5f * rootLargest * 1e-6f);
+        EXPECT_GE(frustumTolerance(bvh, glm::vec3(0.0f)), 4e-5f * rootLargest);
+        EXPECT_FLOAT_EQ(frustumTolerance(bvh, glm::vec3(0.0f, 0.0f, -500.0f)), 4e-5f * 500.0f);
+    }
+    EXPECT_EQ(buildBvh(Scene{}).largestCoordinate, 0.0f);
+}
+
 // A triangle with an edge along the block's outermost rays (its first column) is a candidate and
 // gives those rays closestHit8's answers; one wholly beside the block is culled.
 TEST(BvhFrustum, TriangleAlongTheBlockEdgeIsKeptOneBesideItCulled) {

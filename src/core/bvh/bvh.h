@@ -50,6 +50,9 @@ struct Bvh {
     // a triangle the watertight test hits; a box made while tracing (a triangle's own bounds)
     // must be widened as much.
     float boxPad = 0.0f;
+    // The largest |coordinate| of a valid triangle's vertex (world units; 0 when there is none):
+    // what boxPad and the frustums' tolerance (bvh_frustum.h) are scaled by.
+    float largestCoordinate = 0.0f;
 
     // The SIMD form (bvh_wide.h), built when the CPU runs AVX2 and BvhBuildOptions::simd is set.
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.

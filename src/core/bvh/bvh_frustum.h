@@ -35,7 +35,7 @@ struct RayFrustum {
 };
 
 // The planes' outward push for a pyramid with its apex at `apex` over the scene of `bvh` (which
-// must have nodes): 4e-5 times the largest coordinate of the scene's box and the apex, about 170
+// must have nodes): 4e-5 times the largest |coordinate| of its node boxes and the apex, about 170
 // float ulps of it (1e-5 is about 170 float ulps of a coordinate), far above the few ulps of
 // rounding in the ray arithmetic, the triangle test and the plane test.
 float frustumTolerance(const Bvh& bvh, const glm::vec3& apex);

@@ -244,6 +244,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     const float slack = std::ldexp(std::max(magnitude, 1e-30f), -21);
     const float pad = std::ldexp(std::max(magnitude, 1e-30f), -19);
     bvh.boxPad = pad;
+    bvh.largestCoordinate = magnitude;
     const bool splitsMayPay = hasTriangleWiderThanASpatialBin(widestTriangle, sceneBox);
     if (splitsMayPay) {
         presplitRecords(scene, options.presplitBudget, slack, team, records);

@@ -21,8 +21,9 @@ float maxAbs(const glm::vec3& v) {
 
 float frustumTolerance(const Bvh& bvh, const glm::vec3& apex) {
     constexpr float kToleranceScale = 4e-5f;
-    const Aabb root = bvh.bounds();
-    return kToleranceScale * std::max({maxAbs(root.lower), maxAbs(root.upper), maxAbs(apex)});
+    // The node boxes reach boxPad beyond the largest coordinate. (Read from the Bvh: a block's
+    // two frustums computing the root's box each cost the box's lab passes 2.5%.)
+    return kToleranceScale * std::max(bvh.largestCoordinate + bvh.boxPad, maxAbs(apex));
 }
 
 bool frustumOfImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
