@@ -6,6 +6,7 @@
 #include "accel_scenes.h"
 #include "core/bvh/bvh_frustum.h"
 #include "core/bvh/bvh_packet.h"
+#include "core/bvh/traverse/bvh_packet16_traverse.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/render_settings.h"
@@ -82,7 +83,18 @@ struct Tally {
     int blocks = 0;         // blocks with at least one ray
     int withCandidates = 0; // blocks traced from their candidates
     int hits = 0;
+    int pairsOf16 = 0;    // pairs of rows traced as 16 lanes (closestHitCandidates16 etc.)
+    int pairsRefused = 0; // pairs those calls gave back (their lanes' permutations differ)
 };
+
+// A HitPacket whose every lane holds a hit no call makes: a lane left unwritten shows.
+HitPacket garbageHits() {
+    HitPacket hits;
+    for (int i = 0; i < kPacketSize; ++i) {
+        hits.set(i, Hit{-7.0f, 0.25f, 0.5f, 0xdeadu});
+    }
+    return hits;
+}
 
 bool hasRays(const Block& block) {
     for (int r = 0; r < block.count; ++r) {
@@ -135,6 +147,29 @@ void expectCameraBlockExact(const Bvh& bvh, const Block& block, Tally& tally,
             tally.hits += expected.hit(i).found() ? 1 : 0;
         }
     }
+    if (!bvhPacket16Supported()) {
+        return;
+    }
+    // Rows two by two on 16 lanes: the same answers where the call takes them.
+    for (int r = 0; r + 1 < block.count; r += 2) {
+        HitPacket got[2] = {garbageHits(), garbageHits()};
+        if (!closestHitCandidates16(bvh, candidates, block.packets[r], block.packets[r + 1], got[0],
+                                    got[1])) {
+            ++tally.pairsRefused;
+            continue;
+        }
+        ++tally.pairsOf16;
+        for (int h = 0; h < 2; ++h) {
+            HitPacket expected;
+            closestHit8(bvh, block.packets[r + h], expected);
+            for (int i = 0; i < kPacketSize; ++i) {
+                ASSERT_TRUE(sameHit(got[h].hit(i), expected.hit(i)))
+                    << "row " << r + h << " lane " << i << " of a 16-lane pair: t=" << got[h].t[i]
+                    << " tri=" << got[h].triangle[i] << ", packet t=" << expected.t[i]
+                    << " tri=" << expected.triangle[i];
+            }
+        }
+    }
 }
 
 void expectShadowBlockExact(const Bvh& bvh, const Block& block, const glm::vec3& light,
@@ -156,6 +191,20 @@ void expectShadowBlockExact(const Bvh& bvh, const Block& block, const glm::vec3&
         const unsigned got = anyHitCandidates(bvh, candidates, block.packets[r]);
         ASSERT_EQ(got, expected) << "row " << r << " (" << candidates.count << " candidates)";
         tally.hits += __builtin_popcount(expected);
+    }
+    if (!bvhPacket16Supported()) {
+        return;
+    }
+    for (int r = 0; r + 1 < block.count; r += 2) {
+        unsigned got = 0xdeadbeefu;
+        if (!anyHitCandidates16(bvh, candidates, block.packets[r], block.packets[r + 1], got)) {
+            ++tally.pairsRefused;
+            continue;
+        }
+        ++tally.pairsOf16;
+        const unsigned expected =
+            anyHit8(bvh, block.packets[r]) | anyHit8(bvh, block.packets[r + 1]) << kPacketSize;
+        ASSERT_EQ(got, expected) << "rows " << r << " and " << r + 1 << " on 16 lanes";
     }
 }
 
@@ -206,6 +255,12 @@ TEST(BvhFrustum, CornellBoxBlocksAreExactAndCulled) {
             << shadowTally.withCandidates << " of " << shadowTally.blocks;
         EXPECT_GT(cameraTally.hits, 3000);
         EXPECT_GT(shadowTally.hits, 100); // the blocks cast shadows
+        if (bvhPacket16Supported()) {
+            // Of at most 4 pairs a block: the camera rays' all, the shadow rays' most (rays
+            // towards the light from walls facing different ways differ in permutation).
+            EXPECT_GT(rectTally.pairsOf16, rectTally.withCandidates * 3);
+            EXPECT_GT(shadowTally.pairsOf16, shadowTally.withCandidates * 2);
+        }
     }
 }
 
@@ -238,6 +293,14 @@ TEST(BvhFrustum, RandomCamerasOnSoupsHeightFieldAndSphere) {
     EXPECT_GT(shadowTally.withCandidates, 0);
     EXPECT_GT(cameraTally.hits, 10000);
     EXPECT_GT(shadowTally.hits, 1000);
+    if (bvhPacket16Supported()) {
+        // Most pairs share one permutation; wide fields of view also give pairs that do not.
+        EXPECT_GT(cameraTally.pairsOf16 + rectTally.pairsOf16, 1000);
+        EXPECT_GT(shadowTally.pairsOf16, 100);
+        EXPECT_GT(cameraTally.pairsRefused + rectTally.pairsRefused + shadowTally.pairsRefused, 0);
+    } else {
+        GTEST_LOG_(INFO) << "this CPU has no AVX-512F: the 16-lane candidate tests are not run";
+    }
 }
 
 TEST(BvhFrustum, FarFromTheOriginStaysExact) {

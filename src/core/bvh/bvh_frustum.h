@@ -2,7 +2,8 @@
 // Frustum culling for a group of coherent packets: the camera rays of an 8 x 8 pixel block, or
 // their shadow rays towards one point light. A pyramid that holds every ray of the group is
 // walked through the 8-wide BVH once, keeping the triangles that may lie inside it; each packet
-// then tests just those triangles, with no traversal of its own. When the pyramid holds more
+// then tests just those triangles, with no traversal of its own (where the CPU has AVX-512, two
+// packets at a time, each triangle against their 16 rays at once). When the pyramid holds more
 // than kMaxFrustumCandidates triangles (a finely tessellated mesh seen from afar), the caller
 // traces the packets as usual (bvh_packet.h).
 //

@@ -163,9 +163,9 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
 
 BlockTracing tracingFor(const Bvh& bvh) {
     // Frustums pay where a scene is a few large triangles (the lab's box: raylab-bench's renderer
-    // passes 1.2x the 8-ray packets' samples per second, and 1.08-1.14x the 16-ray packets' on
-    // 1 thread, though the bench traces the box's rays alone 1.13-1.17x faster in 16-ray packets
-    // than in frustum blocks: the blocks share their shading set-up as well). For meshes of tens
+    // passes 1.22x the 16-ray packets' samples per second on 1 thread, 1.26x in passes of 16
+    // samples, where the bench traces the box's rays alone about as fast either way, 0.98-1.00x:
+    // the blocks share their frustum and shading set-up). For meshes of tens
     // of thousands of triangles the walks that end over kMaxFrustumCandidates cost more than they
     // save (bunny, dragon and Sponza 0.92 to 0.95x), so those are traced packet by packet.
     // Nothing was measured in between.

@@ -19,6 +19,9 @@
 // intersectTriangle itself, a lane keeps the minimum of (t, triangle index), and a box is dropped
 // for a lane only when it starts beyond that lane's own closest hit (kBoxRoundUp): every culling
 // test above is a superset of the lanes' own slab tests.
+//
+// Also here: a frustum block's candidate triangles (bvh_frustum.h) tested against two packets'
+// 16 lanes at once, with the same triangle test and rule.
 
 // GCC 12's AVX-512 intrinsics start from _mm512_undefined_*() values, which -Wuninitialized
 // reports inside the intrinsics' headers: silenced before the first include of them.
@@ -405,6 +408,39 @@ RAYLAB_AVX512 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, cons
     return p.others;
 }
 
+RAYLAB_AVX512 bool closestHitCandidates16(const Bvh& bvh, const FrustumCandidates& candidates,
+                                          const RayPacket& low, const RayPacket& high,
+                                          HitPacket& lowHits, HitPacket& highHits) {
+    PacketRays16 p;
+    unsigned lanes = 0;
+    if (!makeSharedPacket16(low, high, p, lanes)) {
+        return false;
+    }
+    PacketBest16 best = noHitYet16();
+    for (int i = 0; i < candidates.count && lanes != 0; ++i) {
+        keepTriangle16(best, bvh.triangleBlocks[candidates.block[i]], candidates.lane[i], p, lanes);
+    }
+    writeBest(halfOf(best, 0), halfLanes(lanes, 0), lowHits);
+    writeBest(halfOf(best, 1), halfLanes(lanes, 1), highHits);
+    return true;
+}
+
+RAYLAB_AVX512 bool anyHitCandidates16(const Bvh& bvh, const FrustumCandidates& candidates,
+                                      const RayPacket& low, const RayPacket& high,
+                                      unsigned& occluded) {
+    PacketRays16 p;
+    unsigned lanes = 0;
+    if (!makeSharedPacket16(low, high, p, lanes)) {
+        return false;
+    }
+    unsigned open = lanes;
+    for (int i = 0; i < candidates.count && open != 0; ++i) {
+        open &= ~hitLanes16(bvh.triangleBlocks[candidates.block[i]], candidates.lane[i], p, open);
+    }
+    occluded = lanes & ~open;
+    return true;
+}
+
 } // namespace raylab
 
 #else // not x86: bvhPacket16Supported() is false, so these are never called.
@@ -417,6 +453,14 @@ unsigned closestHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, HitP
 unsigned anyHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, unsigned& occluded) {
     occluded = 0;
     return 0;
+}
+bool closestHitCandidates16(const Bvh&, const FrustumCandidates&, const RayPacket&,
+                            const RayPacket&, HitPacket&, HitPacket&) {
+    return false;
+}
+bool anyHitCandidates16(const Bvh&, const FrustumCandidates&, const RayPacket&, const RayPacket&,
+                        unsigned&) {
+    return false;
 }
 } // namespace raylab
 

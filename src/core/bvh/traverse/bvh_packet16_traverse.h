@@ -5,6 +5,7 @@
 // and that bvh.wideNodes is not empty.
 
 #include "bvh/bvh.h"
+#include "bvh/bvh_frustum.h"
 #include "ray_packet.h"
 
 namespace raylab {
@@ -30,5 +31,17 @@ unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacke
                             HitPacket& lowHits, HitPacket& highHits);
 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
                         unsigned& occluded);
+
+// closestHitCandidates and anyHitCandidates (bvh_frustum.h) of low and high at once, each
+// candidate tested against the 16 lanes in one AVX-512 triangle test, when every valid lane of
+// both shares one ray permutation (the common case of a block's rays); then every lane of
+// lowHits and highHits is written, or `occluded` set (16 bits), as the 8-lane calls would, bit
+// for bit. False otherwise, with nothing written: the caller traces each packet on its own. Call
+// only where bvhPacket16Supported() and bvh.wideNodes is not empty.
+bool closestHitCandidates16(const Bvh& bvh, const FrustumCandidates& candidates,
+                            const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
+                            HitPacket& highHits);
+bool anyHitCandidates16(const Bvh& bvh, const FrustumCandidates& candidates, const RayPacket& low,
+                        const RayPacket& high, unsigned& occluded);
 
 } // namespace raylab
