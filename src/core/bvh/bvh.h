@@ -118,9 +118,10 @@ void closestHits(const Bvh& bvh, const Ray* rays, std::size_t count, Hit* hits);
 
 // closestHits' rule: the 8-wide form's nodes and triangle blocks take more than
 // kInterleaveFromBytes, so that most of a walk's reads miss the caches. Measured on raylab-bench's
-// bounce rays alone, 1 thread, interleaved over one by one: the dragon (45 MiB) 1.14-1.25x; with
-// a first version of the walks, its 10 MiB version 0.96-0.98x, Sponza (16 MiB) 0.75-0.83x, the
-// bunny (4 MiB) 0.90-0.94x (PERFORMANCE.md, "Interleaved walks").
+// bounce rays alone, 1 thread, interleaved over one by one: the dragon (45 MiB) 1.14-1.25x, the
+// dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70% (32 MiB) 1.01-1.05x, to half
+// (22 MiB) 0.96-0.99x; with a first version of the walks, its 10 MiB version 0.96-0.98x, Sponza
+// (16 MiB) 0.75-0.83x, the bunny (4 MiB) 0.90-0.94x (PERFORMANCE.md, "Interleaved walks").
 inline constexpr std::size_t kInterleaveFromBytes = std::size_t{32} << 20;
 bool interleavesRays(const Bvh& bvh);
 
