@@ -160,13 +160,18 @@ TEST(LabShadingPacket, BlocksEqualPackets) {
     }
 }
 
-// The renderer's rule: frustums for small scenes where the CPU has AVX2, never for a mesh of
-// thousands of triangles.
+// The renderer's rule: frustums for scenes of up to 4,096 leaf triangles where the CPU has
+// AVX2, packets for larger ones.
 TEST(LabShadingPacket, TracingForTheScene) {
+    const BlockTracing small = bvhSimdSupported() ? BlockTracing::Frustums : BlockTracing::Packets;
     const Bvh box = buildBvh(makeCornellBox());
-    const Bvh soup = buildBvh(makeTriangleSoup(5000, 0.1f, 31));
-    EXPECT_EQ(tracingFor(soup), BlockTracing::Packets);
-    EXPECT_EQ(tracingFor(box), bvhSimdSupported() ? BlockTracing::Frustums : BlockTracing::Packets);
+    EXPECT_EQ(tracingFor(box), small);
+    const Bvh below = buildBvh(makeTriangleSoup(4000, 0.1f, 31));
+    ASSERT_LE(below.leafReferences, 4096u);
+    EXPECT_EQ(tracingFor(below), small);
+    const Bvh above = buildBvh(makeTriangleSoup(4200, 0.1f, 31));
+    ASSERT_GT(above.leafReferences, 4096u);
+    EXPECT_EQ(tracingFor(above), BlockTracing::Packets);
 }
 
 // tilePixel lays a block's 8 packets out as four 4 x 4 tiles: every pixel of the 8 x 8 block
