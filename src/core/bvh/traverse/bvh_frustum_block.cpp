@@ -1,7 +1,8 @@
-// A block's packets traced through one frustum's candidates, or one by one when it does not fit
-// (bvh_frustum.h). Through the candidates, rows go two by two on 16 lanes where the CPU has
-// AVX-512 (closestHitCandidates16, anyHitCandidates16): the box's blocks 1.13x as fast as row by
-// row (raylab-bench, 1 thread), its lab passes 1.11-1.13x.
+// A block's packets traced through one frustum's candidates, or through the BVH when they do
+// not fit (bvh_frustum.h). Where the CPU has AVX-512 the rows go two by two on 16 lanes either
+// way: through the candidates (closestHitCandidates16, anyHitCandidates16) the box's blocks
+// 1.13x as fast as row by row (raylab-bench, 1 thread), its lab passes 1.11-1.13x; through the
+// BVH (closestHit16, anyHit16) the bunny's blocks 1.07x.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -12,15 +13,18 @@ namespace raylab {
 namespace {
 
 // closestHit8 for each packet, through the candidates of `frustum` when `framed` and they fit:
-// two packets at a time on 16 lanes where the CPU has AVX-512 (closestHitCandidates16).
+// two packets at a time on 16 lanes where the CPU has AVX-512.
 bool closestHitInFrustum(const Bvh& bvh, bool framed, const RayFrustum& frustum,
                          const RayPacket* rays, int count, HitPacket* hits) {
     FrustumCandidates candidates;
     const bool culled = framed && frustumCandidates(bvh, frustum, candidates);
     static const bool pairs = bvhPacket16Supported();
     int k = 0;
-    for (; culled && pairs && k + 1 < count; k += 2) {
-        if (!closestHitCandidates16(bvh, candidates, rays[k], rays[k + 1], hits[k], hits[k + 1])) {
+    for (; pairs && k + 1 < count; k += 2) {
+        if (!culled) {
+            closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
+        } else if (!closestHitCandidates16(bvh, candidates, rays[k], rays[k + 1], hits[k],
+                                           hits[k + 1])) {
             closestHitCandidates(bvh, candidates, rays[k], hits[k]);
             closestHitCandidates(bvh, candidates, rays[k + 1], hits[k + 1]);
         }
@@ -58,10 +62,12 @@ bool anyHitBlock(const Bvh& bvh, const RayPacket* rays, int count, const glm::ve
                         frustumCandidates(bvh, frustum, candidates);
     static const bool pairs = bvhPacket16Supported();
     int k = 0;
-    for (; culled && pairs && k + 1 < count; k += 2) {
+    for (; pairs && k + 1 < count; k += 2) {
         unsigned both = 0;
-        if ((rays[k].lanes | rays[k + 1].lanes) != 0 &&
-            !anyHitCandidates16(bvh, candidates, rays[k], rays[k + 1], both)) {
+        const bool anyRays = (rays[k].lanes | rays[k + 1].lanes) != 0;
+        if (anyRays && !culled) {
+            both = anyHit16(bvh, rays[k], rays[k + 1]);
+        } else if (anyRays && !anyHitCandidates16(bvh, candidates, rays[k], rays[k + 1], both)) {
             both = anyHitCandidates(bvh, candidates, rays[k]) |
                    anyHitCandidates(bvh, candidates, rays[k + 1]) << kPacketSize;
         }
