@@ -165,13 +165,12 @@ BlockTracing tracingFor(const Bvh& bvh) {
     // Frustums pay where a scene is a few large triangles (the lab's box: raylab-bench's renderer
     // passes 1.22x the 16-ray packets' samples per second on 1 thread, 1.26x in passes of 16
     // samples, where the bench traces the box's rays alone about as fast either way, 0.98-1.00x:
-    // the blocks share their frustum and shading set-up). For meshes of tens
-    // of tens of thousands of triangles the walks that end over kMaxFrustumCandidates cost more
-    // than they save (bunny, dragon and Sponza 0.92 to 0.95x), so those are traced packet by
-    // packet. In between it depends on how many triangles a block sees: a sphere of 3,970
-    // triangles over a floor, framed as raylab-bench frames a mesh, 1.12-1.14x (passes of 16
-    // samples 1.16-1.20x); of 16,130, 1.06-1.13x (1.09-1.24x); the bunny's 16,301-triangle
-    // version 0.95-0.97x (1.00-1.02x).
+    // the blocks share their frustum and shading set-up). For meshes of tens of thousands of
+    // triangles the walks that end over kMaxFrustumCandidates cost more than they save (bunny,
+    // dragon and Sponza 0.92 to 0.95x), so those are traced packet by packet. In between it depends
+    // on how many triangles a block sees: a sphere of 3,970 triangles over a floor, framed as
+    // raylab-bench frames a mesh, 1.12-1.14x (passes of 16 samples 1.16-1.20x); of
+    // 16,130, 1.06-1.13x (1.09-1.24x); the bunny's 16,301-triangle version 0.95-0.97x (1.00-1.02x).
     constexpr std::size_t kMaxFrustumSceneTriangles = 4096;
     static const bool simd = bvhSimdSupported();
     return simd && !bvh.wideNodes.empty() && bvh.leafReferences <= kMaxFrustumSceneTriangles
