@@ -36,6 +36,10 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             std::vector<RecordVector> lefts(chunks), rights(chunks);
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
+                // A reference goes to one side, or is cut into at most one part on each.
+                const auto size = static_cast<std::size_t>(chunkEnd(i) - chunkBegin(i));
+                lefts[i].reserve(size);
+                rights[i].reserve(size);
                 applySpatialSplit(*context_.scene, chunkBegin(i), chunkEnd(i), choice.spatial,
                                   context_.slack, lefts[i], rights[i], leftBounds[i],
                                   rightBounds[i]);
@@ -46,17 +50,25 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 rightSize += rights[i].size();
             }
             if (leftSize > 0 && rightSize > 0 && leftSize + rightSize - count <= task.splitBudget) {
-                // Both children in one new array, left first, with as much spare room.
-                RecordVector& both = arrays.emplace_back();
-                both.reserve(leftSize + rightSize);
+                // Both children in one new array, left first (each side in chunk order), with
+                // as much spare room; the chunks' parts are copied on the team.
+                RecordVector& both = arrays.emplace_back(leftSize + rightSize);
+                std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
+                std::size_t l = 0, r = leftSize;
                 for (std::size_t i = 0; i < chunks; ++i) {
-                    both.insert(both.end(), lefts[i].begin(), lefts[i].end());
+                    leftAt[i] = l;
+                    rightAt[i] = r;
+                    l += lefts[i].size();
+                    r += rights[i].size();
                     left.bounds.merge(leftBounds[i]);
-                }
-                for (std::size_t i = 0; i < chunks; ++i) {
-                    both.insert(both.end(), rights[i].begin(), rights[i].end());
                     right.bounds.merge(rightBounds[i]);
                 }
+                team.forEach(chunks, [&](std::size_t i) {
+                    std::copy(lefts[i].begin(), lefts[i].end(),
+                              both.begin() + static_cast<std::ptrdiff_t>(leftAt[i]));
+                    std::copy(rights[i].begin(), rights[i].end(),
+                              both.begin() + static_cast<std::ptrdiff_t>(rightAt[i]));
+                });
                 RecordVector& spare = arrays.emplace_back();
                 spare.resize(both.size());
                 left.first = both.data();

@@ -63,17 +63,19 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
     }
     // Chunks of a fixed size: their partial sums are added in chunk order, and their outputs
     // concatenated in chunk order, whatever thread made them.
-    constexpr std::size_t kChunk = 32768;
+    constexpr std::size_t kChunk = 4096;
     const std::size_t chunks = (records.size() + kChunk - 1) / kChunk;
     auto chunkEnd = [&](std::size_t c) { return std::min(records.size(), (c + 1) * kChunk); };
     std::vector<float> priority(records.size());
     std::vector<double> partial(chunks, 0.0);
     team.forEach(chunks, [&](std::size_t c) {
+        double sum = 0.0; // stored once: the chunks' sums share cache lines
         for (std::size_t i = c * kChunk; i < chunkEnd(c); ++i) {
             const Aabb box{records[i].lower, records[i].upper};
             priority[i] = std::cbrt(waste(scene.triangles[records[i].sceneIndex], box));
-            partial[c] += priority[i];
+            sum += priority[i];
         }
+        partial[c] = sum;
     });
     double total = 0.0;
     for (const double p : partial) {
