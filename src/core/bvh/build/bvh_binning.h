@@ -86,7 +86,8 @@ inline RecordBounds boundsOf(const PrimRecord* first, const PrimRecord* last) {
 }
 
 // SAH bins of the three axes. Only the first `bins` of each axis are used; reset() empties them.
-struct BinSet {
+// Cache-line aligned: the chunks of a node binned on the team fill one each, side by side.
+struct alignas(64) BinSet {
     SseBox box[3][kMaxBins];
     uint32_t count[3][kMaxBins] = {};
     void reset(int bins) {

@@ -290,9 +290,13 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         const std::size_t i = order[k];
         BuildTask local = deferred[i];
         local.slot = 0;
-        subtrees[i].nodes.reserve(local.count + 1);
-        subtrees[i].nodes.resize(1);
-        builder.buildSubtree(subtrees[i], local);
+        // Built in the job's own Subtree and moved in once: the subtrees' vectors lie side by
+        // side, and growing them from several threads would share their cache lines.
+        Subtree subtree;
+        subtree.nodes.reserve(local.count + 1);
+        subtree.nodes.resize(1);
+        builder.buildSubtree(subtree, local);
+        subtrees[i] = std::move(subtree);
     });
     std::vector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices);

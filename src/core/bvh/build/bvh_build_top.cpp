@@ -36,13 +36,21 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             std::vector<RecordVector> lefts(chunks), rights(chunks);
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
+                // Into the job's own arrays and bounds, stored once: the chunks' vectors and
+                // bounds lie side by side, and writing them record by record from several
+                // threads made Sponza's top spatial splits 3-6 times slower on 2 threads.
                 // A reference goes to one side, or is cut into at most one part on each.
                 const auto size = static_cast<std::size_t>(chunkEnd(i) - chunkBegin(i));
-                lefts[i].reserve(size);
-                rights[i].reserve(size);
+                RecordVector l, r;
+                l.reserve(size);
+                r.reserve(size);
+                RecordBounds lb, rb;
                 applySpatialSplit(*context_.scene, chunkBegin(i), chunkEnd(i), choice.spatial,
-                                  context_.slack, lefts[i], rights[i], leftBounds[i],
-                                  rightBounds[i]);
+                                  context_.slack, l, r, lb, rb);
+                lefts[i] = std::move(l);
+                rights[i] = std::move(r);
+                leftBounds[i] = lb;
+                rightBounds[i] = rb;
             });
             std::size_t leftSize = 0, rightSize = 0;
             for (std::size_t i = 0; i < chunks; ++i) {
@@ -96,8 +104,11 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             }
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
+                RecordBounds lb, rb; // stored once, as above
                 partitionRecords(chunkBegin(i), chunkEnd(i), choice.object, task.spare + leftAt[i],
-                                 task.spare + rightAt[i], leftBounds[i], rightBounds[i]);
+                                 task.spare + rightAt[i], lb, rb);
+                leftBounds[i] = lb;
+                rightBounds[i] = rb;
             });
             for (std::size_t i = 0; i < chunks; ++i) {
                 left.bounds.merge(leftBounds[i]);

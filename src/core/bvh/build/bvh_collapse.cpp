@@ -331,8 +331,10 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
     Collapser(tree, top, deferBelow, &pending).run(0, 1);
     std::vector<WidePart> parts(pending.size());
     team.forEach(parts.size(), [&](std::size_t i) {
-        parts[i].depth = pending[i].depth;
-        Collapser(tree, parts[i], 0, nullptr).run(pending[i].binary, pending[i].depth);
+        WidePart part; // moved in once: the parts' vectors would share cache lines
+        part.depth = pending[i].depth;
+        Collapser(tree, part, 0, nullptr).run(pending[i].binary, pending[i].depth);
+        parts[i] = std::move(part);
     });
 
     // Offsets: the top's nodes and blocks first, then each part's.

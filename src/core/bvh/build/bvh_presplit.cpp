@@ -87,7 +87,7 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
     const double scale = static_cast<double>(budget) * static_cast<double>(records.size()) / total;
     std::vector<RecordVector> outs(chunks);
     team.forEach(chunks, [&](std::size_t c) {
-        RecordVector& out = outs[c];
+        RecordVector out; // moved into outs[c] once: the chunks' vectors share cache lines
         out.reserve(chunkEnd(c) - c * kChunk + static_cast<std::size_t>(scale * partial[c]) + 64);
         std::vector<Aabb> work;
         for (std::size_t i = c * kChunk; i < chunkEnd(c); ++i) {
@@ -99,6 +99,7 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
             splitTriangle(scene.triangles[records[i].sceneIndex], records[i].sceneIndex,
                           Aabb{records[i].lower, records[i].upper}, pieces, slack, work, out);
         }
+        outs[c] = std::move(out);
     });
     std::vector<std::size_t> at(chunks + 1, 0);
     for (std::size_t c = 0; c < chunks; ++c) {

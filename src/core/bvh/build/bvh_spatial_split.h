@@ -32,8 +32,8 @@ struct SpatialSplit {
 // it: that clipping took most of Sponza's build, for trees that traced no faster). The SAH cost
 // the bins give a plane is then an upper estimate of that of the split the plane makes, whose
 // references applySpatialSplit clips exactly. min, max and sums are exact, so bins of parts of
-// a node merged in a fixed order equal the bins of the whole.
-struct SpatialBins {
+// a node merged in a fixed order equal the bins of the whole. Cache-line aligned, as BinSet.
+struct alignas(64) SpatialBins {
     SseBox box[kSpatialBins];
     uint32_t entering[kSpatialBins] = {};
     uint32_t leaving[kSpatialBins] = {};
