@@ -18,6 +18,13 @@ bool closestHitInFrustum(const Bvh& bvh, bool framed, const RayFrustum& frustum,
                          const RayPacket* rays, int count, HitPacket* hits) {
     FrustumCandidates candidates;
     const bool culled = framed && frustumCandidates(bvh, frustum, candidates);
+    const auto one = [&](int j) {
+        if (culled) {
+            closestHitCandidates(bvh, candidates, rays[j], hits[j]);
+        } else {
+            closestHit8(bvh, rays[j], hits[j]);
+        }
+    };
     static const bool pairs = bvhPacket16Supported();
     int k = 0;
     for (; pairs && k + 1 < count; k += 2) {
@@ -25,16 +32,12 @@ bool closestHitInFrustum(const Bvh& bvh, bool framed, const RayFrustum& frustum,
             closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
         } else if (!closestHitCandidates16(bvh, candidates, rays[k], rays[k + 1], hits[k],
                                            hits[k + 1])) {
-            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
-            closestHitCandidates(bvh, candidates, rays[k + 1], hits[k + 1]);
+            one(k);
+            one(k + 1);
         }
     }
     for (; k < count; ++k) {
-        if (culled) {
-            closestHitCandidates(bvh, candidates, rays[k], hits[k]);
-        } else {
-            closestHit8(bvh, rays[k], hits[k]);
-        }
+        one(k);
     }
     return culled;
 }
@@ -60,6 +63,12 @@ bool anyHitBlock(const Bvh& bvh, const RayPacket* rays, int count, const glm::ve
     FrustumCandidates candidates;
     const bool culled = frustumOfSegments(bvh, rays, count, end, frustum) &&
                         frustumCandidates(bvh, frustum, candidates);
+    const auto one = [&](int j) -> unsigned {
+        if (rays[j].lanes == 0) {
+            return 0;
+        }
+        return culled ? anyHitCandidates(bvh, candidates, rays[j]) : anyHit8(bvh, rays[j]);
+    };
     static const bool pairs = bvhPacket16Supported();
     int k = 0;
     for (; pairs && k + 1 < count; k += 2) {
@@ -68,18 +77,13 @@ bool anyHitBlock(const Bvh& bvh, const RayPacket* rays, int count, const glm::ve
         if (anyRays && !culled) {
             both = anyHit16(bvh, rays[k], rays[k + 1]);
         } else if (anyRays && !anyHitCandidates16(bvh, candidates, rays[k], rays[k + 1], both)) {
-            both = anyHitCandidates(bvh, candidates, rays[k]) |
-                   anyHitCandidates(bvh, candidates, rays[k + 1]) << kPacketSize;
+            both = one(k) | one(k + 1) << kPacketSize;
         }
         occluded[k] = both & 0xffu;
         occluded[k + 1] = both >> kPacketSize;
     }
     for (; k < count; ++k) {
-        occluded[k] = 0;
-        if (rays[k].lanes != 0) {
-            occluded[k] =
-                culled ? anyHitCandidates(bvh, candidates, rays[k]) : anyHit8(bvh, rays[k]);
-        }
+        occluded[k] = one(k);
     }
     return culled;
 }
