@@ -77,6 +77,22 @@ TEST_P(BvhPacket16, LaneMasksWithGaps) {
     EXPECT_EQ(failures, 0);
 }
 
+// Every triangle three times, the copies at far apart indices: each lane keeps the lowest index
+// at equal t, whether its leaves are tested triangle by triangle against the lanes (coherent
+// camera rays) or, with few lanes left in a leaf, block by block against each lane's ray
+// (random rays).
+TEST_P(BvhPacket16, CoincidentTrianglesGiveTheLowestIndexInEveryLane) {
+    Scene scene = makeTriangleSoup(1500, 0.15f, 29);
+    const std::vector<Triangle> once = scene.triangles;
+    scene.triangles.insert(scene.triangles.end(), once.rbegin(), once.rend());
+    scene.triangles.insert(scene.triangles.end(), once.begin(), once.end());
+    const Bvh bvh = buildBvh(scene);
+    Camera camera;
+    camera.position = {0.0f, 0.0f, -2.5f};
+    EXPECT_GT(expectPackets(bvh, cameraRays(camera, 64, 48), &scene), 0);
+    EXPECT_GT(expectPackets(bvh, makeRandomRays(3000, 30), &scene), 0);
+}
+
 TEST_P(BvhPacket16, DegenerateAndNonFiniteTriangles) {
     Scene scene = makeTriangleSoup(1000, 0.2f, 3);
     scene.triangles[10].v0.x = kNaN;

@@ -7,7 +7,9 @@
 //   every active lane (a superset of the lanes that enter it) and the frustum's entry distance;
 // - only the other candidates are tested lane by lane (hitChild16);
 // - in a leaf, the frustum leaves out the triangles whose (padded) bounding box no lane can
-//   enter, and each other triangle is tested against the active lanes.
+//   enter, and each other triangle is tested against the active lanes; where fewer lanes reach
+//   a block than it has such triangles, each lane's ray is tested against the block's 8
+//   triangles at once instead (the single-ray traversal's test, bvh_block_ray.h).
 // Each node's children are prefetched as soon as they are taken (prefetchChild).
 // Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
@@ -35,6 +37,7 @@
 #if defined(__x86_64__) || defined(__i386__)
 
 #include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_block_ray.h"
 #include "bvh/traverse/bvh_packet16_lanes.h"
 #include "bvh/traverse/bvh_packet_traverse.h"
 
@@ -57,9 +60,11 @@ struct Frustum {
     __m256 tMin; // the lanes' smallest tMin
 };
 
-// Each lane's box-test constants as floats, for tests of one lane's ray.
+// Each lane's constants as floats, for tests of one lane's ray: the box test's, and the shear
+// and tMax of the triangle test (whose origin in permuted order is origin[k]).
 struct alignas(64) LaneScalars {
     float origin[3][kPacket16Size], inverse[3][kPacket16Size], tMin[kPacket16Size];
+    float shear[3][kPacket16Size], tMax[kPacket16Size];
 };
 
 // The 16 rays.
@@ -194,6 +199,10 @@ RAYLAB_AVX512 inline bool makePacket16(const RayPacket& low, const RayPacket& hi
         _mm512_store_ps(p.scalars.inverse[axis], p.rays.inverse[axis]);
     }
     _mm512_store_ps(p.scalars.tMin, p.rays.tMin);
+    _mm512_store_ps(p.scalars.shear[0], p.rays.shearX);
+    _mm512_store_ps(p.scalars.shear[1], p.rays.shearY);
+    _mm512_store_ps(p.scalars.shear[2], p.rays.shearZ);
+    _mm512_store_ps(p.scalars.tMax, p.rays.tMax);
     makeFrustum(p);
     return true;
 }
@@ -266,20 +275,83 @@ RAYLAB_AVX512 inline void descend16(int n, const PacketEntry16* stack, int& size
     active = stack[size].lanes;
 }
 
-// Tests the triangles of leaf `ref` that some lane may hit before limitMax (frustumTriangles)
-// against the lanes of `active`. Closest hit: keeps the lanes' closest hits in best. Any hit:
-// adds the lanes that hit to `found`, drops them from `active`, and stops when none is left.
+// Lane l's ray with the single-ray traversal's constants (the same values: makePacket16's
+// quotients are WatertightRay's, lane by lane).
+RAYLAB_AVX512 inline BlockRay laneBlockRay(const Packet16& p, int l) {
+    BlockRay r;
+    for (int a = 0; a < 3; ++a) {
+        r.vertexOffset[a] = p.rays.vertexOffset[a];
+        r.originK[a] = _mm256_set1_ps(p.scalars.origin[r.vertexOffset[a] / kWideLanes][l]);
+    }
+    r.shearX = _mm256_set1_ps(p.scalars.shear[0][l]);
+    r.shearY = _mm256_set1_ps(p.scalars.shear[1][l]);
+    r.shearZ = _mm256_set1_ps(p.scalars.shear[2][l]);
+    r.tMin = _mm256_set1_ps(p.scalars.tMin[l]);
+    r.tMax = _mm256_set1_ps(p.scalars.tMax[l]);
+    return r;
+}
+
+// The 8 triangles of a block against lane l's ray in one test (the single-ray traversal's,
+// bvh_block_ray.h), each hit kept in best for that lane when closer by the (t, triangle) rule:
+// what keepTriangle16 would keep for the lane, triangle by triangle.
+RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlock& block,
+                                        const Packet16& p, int l) {
+    const LaneHits h = intersectBlock(block, laneBlockRay(p, l));
+    if ((h.hits | h.exact) == 0) {
+        return;
+    }
+    const __m512i lane = _mm512_set1_epi32(l);
+    LaneBest laneBest{_mm512_cvtss_f32(_mm512_permutexvar_ps(lane, best.t)),
+                      static_cast<uint32_t>(_mm_cvtsi128_si32(
+                          _mm512_castsi512_si128(_mm512_permutexvar_epi32(lane, best.triangle)))),
+                      0.0f, 0.0f, 1.0f}; // e1, e2, det: written with t
+    if (keepBlockHits(laneBest, block, h, p.rays.rays[l / kPacketSize]->ray(l % kPacketSize))) {
+        const auto only = static_cast<__mmask16>(1u << l);
+        best.t = _mm512_mask_mov_ps(best.t, only, _mm512_set1_ps(laneBest.t));
+        best.e1 = _mm512_mask_mov_ps(best.e1, only, _mm512_set1_ps(laneBest.e1));
+        best.e2 = _mm512_mask_mov_ps(best.e2, only, _mm512_set1_ps(laneBest.e2));
+        best.det = _mm512_mask_mov_ps(best.det, only, _mm512_set1_ps(laneBest.det));
+        best.triangle = _mm512_mask_mov_epi32(
+            best.triangle, only, _mm512_set1_epi32(static_cast<int>(laneBest.triangle)));
+    }
+}
+
+// Whether lane l's ray hits one of the 8 triangles of a block (one test, as keepBlockLane).
+RAYLAB_AVX512 inline bool blockHitsLane(const BvhTriangleBlock& block, const Packet16& p, int l) {
+    return blockHit(block, intersectBlock(block, laneBlockRay(p, l)),
+                    p.rays.rays[l / kPacketSize]->ray(l % kPacketSize));
+}
+
+// Tests the triangles of leaf `ref` against the lanes of `active`. Closest hit: keeps the lanes'
+// closest hits in best. Any hit: adds the lanes that hit to `found`, drops them from `active`,
+// and stops when none is left. Per block, whichever costs fewer tests of 8 or 16 lanes:
+// - each triangle some lane may hit before limitMax (frustumTriangles) against the 16 lanes;
+// - or, when fewer lanes are active than that, each lane's ray against the whole block
+//   (keepBlockLane, blockHitsLane): the single-ray traversal's leaf test. A lone lane takes it
+//   without the frustum test, which costs about as much as the block's.
 template <bool closest>
 RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16& p, float limitMax,
                                    PacketBest16* best, unsigned& active, unsigned& found) {
     const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
     for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
-        for (unsigned m = frustumTriangles(*block, p.frustum, bvh.boxPad, limitMax);
-             m != 0 && active != 0; m &= m - 1) {
-            const int tri = __builtin_ctz(m);
-            if (repeatsFirst(*block, tri)) {
-                continue;
+        const int lanes = __builtin_popcount(active);
+        const unsigned candidates =
+            distinctTriangles(*block) &
+            (lanes == 1 ? 0xffu : frustumTriangles(*block, p.frustum, bvh.boxPad, limitMax));
+        if (lanes < __builtin_popcount(candidates)) {
+            for (unsigned m = active; m != 0; m &= m - 1) {
+                const int l = __builtin_ctz(m);
+                if constexpr (closest) {
+                    keepBlockLane(*best, *block, p, l);
+                } else if (blockHitsLane(*block, p, l)) {
+                    found |= 1u << l;
+                    active &= ~(1u << l);
+                }
             }
+            continue;
+        }
+        for (unsigned m = candidates; m != 0 && active != 0; m &= m - 1) {
+            const int tri = __builtin_ctz(m);
             if constexpr (closest) {
                 keepTriangle16(*best, *block, tri, p.rays, active);
             } else {

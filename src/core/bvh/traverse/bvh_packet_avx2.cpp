@@ -1,6 +1,7 @@
 // AVX2 packet traversal of the 8-wide BVH: the 8 lanes of a register are 8 rays. A node tests
 // each child's box against all rays and descends when any active ray hits it; a leaf tests each
-// triangle against all rays at once.
+// triangle against all rays at once, or, where fewer rays reach a block than it has triangles,
+// each ray against the block's 8 triangles at once (the single-ray traversal's test).
 //
 // Exactness, lane by lane: the triangle test is intersectTriangle (triangle_intersection.cpp)
 // operation for operation (core builds with -ffp-contract=off), valid because all lanes share
@@ -77,6 +78,91 @@ RAYLAB_AVX2 inline void descend(const PacketEntry* children, int n, PacketEntry*
     active = children[n - 1].lanes;
 }
 
+// Lane l of x in all 8 lanes.
+RAYLAB_AVX2 inline __m256 laneOf(__m256 x, int l) {
+    return _mm256_permutevar8x32_ps(x, _mm256_set1_epi32(l));
+}
+
+// Lane l's ray with the single-ray traversal's constants (the same values: makePacket's
+// quotients are WatertightRay's, lane by lane).
+RAYLAB_AVX2 inline BlockRay laneBlockRay(const PacketRays& p, int l) {
+    BlockRay r;
+    for (int a = 0; a < 3; ++a) {
+        r.originK[a] = laneOf(p.originK[a], l);
+        r.vertexOffset[a] = p.vertexOffset[a];
+    }
+    r.shearX = laneOf(p.shearX, l);
+    r.shearY = laneOf(p.shearY, l);
+    r.shearZ = laneOf(p.shearZ, l);
+    r.tMin = laneOf(p.tMin, l);
+    r.tMax = laneOf(p.tMax, l);
+    return r;
+}
+
+// The 8 triangles of a block against lane l's ray in one test (bvh_block_ray.h), each hit kept
+// in best for that lane when closer by the (t, triangle) rule: what keepTriangle would keep for
+// the lane, triangle by triangle.
+RAYLAB_AVX2 inline void keepBlockLane(PacketBest& best, const BvhTriangleBlock& block,
+                                      const PacketRays& p, const RayPacket& rays, int l) {
+    const LaneHits h = intersectBlock(block, laneBlockRay(p, l));
+    if ((h.hits | h.exact) == 0) {
+        return;
+    }
+    const __m256i lane = _mm256_set1_epi32(l);
+    LaneBest laneBest{_mm256_cvtss_f32(_mm256_permutevar8x32_ps(best.t, lane)),
+                      static_cast<uint32_t>(
+                          _mm256_cvtsi256_si32(_mm256_permutevar8x32_epi32(best.triangle, lane))),
+                      0.0f, 0.0f, 1.0f}; // e1, e2, det: written with t
+    if (keepBlockHits(laneBest, block, h, rays.ray(l))) {
+        const __m256 only = _mm256_castsi256_ps(
+            _mm256_cmpeq_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), lane));
+        best.t = _mm256_blendv_ps(best.t, _mm256_set1_ps(laneBest.t), only);
+        best.e1 = _mm256_blendv_ps(best.e1, _mm256_set1_ps(laneBest.e1), only);
+        best.e2 = _mm256_blendv_ps(best.e2, _mm256_set1_ps(laneBest.e2), only);
+        best.det = _mm256_blendv_ps(best.det, _mm256_set1_ps(laneBest.det), only);
+        best.triangle = _mm256_castps_si256(_mm256_blendv_ps(
+            _mm256_castsi256_ps(best.triangle),
+            _mm256_castsi256_ps(_mm256_set1_epi32(static_cast<int>(laneBest.triangle))), only));
+    }
+}
+
+// The leaf's blocks against the lanes of `active`. Closest hit (best set): keeps the lanes'
+// closest hits in best. Any hit: adds the lanes that hit to `found`, drops them from `active`,
+// and stops when none is left. Per block, whichever takes fewer tests of 8 lanes: each of its
+// triangles against the lanes, or each active lane's ray against the whole block (the
+// single-ray traversal's leaf test), when fewer lanes are active than it has triangles.
+RAYLAB_AVX2 inline void testLeaf(const Bvh& bvh, uint32_t ref, const PacketRays& p,
+                                 const RayPacket& rays, PacketBest* best, unsigned& active,
+                                 unsigned& found) {
+    const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+    for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
+        const unsigned triangles = distinctTriangles(*block);
+        if (__builtin_popcount(active) < __builtin_popcount(triangles)) {
+            for (unsigned m = active; m != 0; m &= m - 1) {
+                const int l = __builtin_ctz(m);
+                if (best != nullptr) {
+                    keepBlockLane(*best, *block, p, rays, l);
+                } else if (blockHit(*block, intersectBlock(*block, laneBlockRay(p, l)),
+                                    rays.ray(l))) {
+                    found |= 1u << l;
+                    active &= ~(1u << l);
+                }
+            }
+            continue;
+        }
+        for (unsigned m = triangles; m != 0 && active != 0; m &= m - 1) {
+            const int tri = __builtin_ctz(m);
+            if (best != nullptr) {
+                keepTriangle(*best, *block, tri, p, rays, active);
+            } else {
+                const unsigned hit = hitLanes(*block, tri, p, rays, active);
+                found |= hit;
+                active &= ~hit;
+            }
+        }
+    }
+}
+
 } // namespace
 
 RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
@@ -103,15 +189,8 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, Hit
                 continue;
             }
         } else {
-            const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
-            for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
-                for (int tri = 0; tri < kWideLanes; ++tri) {
-                    if (repeatsFirst(*block, tri)) {
-                        continue;
-                    }
-                    keepTriangle(best, *block, tri, p, rays, active);
-                }
-            }
+            unsigned found = 0;
+            testLeaf(bvh, ref, p, rays, &best, active, found);
             limit = _mm256_min_ps(p.tMax, best.t);
         }
         // Next: the nearest pending entry that some lane may still find a closer hit in.
@@ -155,17 +234,7 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigne
                 continue;
             }
         } else {
-            const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
-            for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
-                for (int tri = 0; tri < kWideLanes && active != 0; ++tri) {
-                    if (repeatsFirst(*block, tri)) {
-                        continue;
-                    }
-                    const unsigned hit = hitLanes(*block, tri, p, rays, active);
-                    found |= hit;
-                    active &= ~hit;
-                }
-            }
+            testLeaf(bvh, ref, p, rays, nullptr, active, found);
             if (found == lanes) {
                 break;
             }

@@ -5,6 +5,7 @@
 // index), so that the order in which triangles are tested never changes an answer.
 
 #include "bvh/bvh.h"
+#include "bvh/traverse/bvh_block_ray.h"
 #include "bvh/traverse/bvh_box_ray.h"
 #include "bvh/traverse/bvh_packet_setup.h"
 #include "bvh/traverse/bvh_wide_refs.h"
@@ -28,22 +29,19 @@ RAYLAB_AVX2 inline LaneHits intersectTriangle8(const BvhTriangleBlock& block, in
     return watertightLanes(x, y, z, p.shearZ, p.tMin, p.tMax);
 }
 
-// A block's triangle through the scalar test, for one lane's ray.
-inline bool intersectLane(const BvhTriangleBlock& block, int tri, const Ray& ray, float& t,
-                          float& u, float& v) {
-    glm::vec3 q[3];
-    for (int k = 0; k < 3; ++k) {
-        for (int a = 0; a < 3; ++a) {
-            q[k][a] = block.vertex[k][a][tri];
-        }
-    }
-    return intersectTriangle(WatertightRay(ray), q[0], q[1], q[2], t, u, v);
-}
-
 // Spare lanes of a block repeat its first triangle (bvh_wide.h); pre-split copies of one
 // triangle have equal vertices too. Either way testing it again cannot change an answer.
 inline bool repeatsFirst(const BvhTriangleBlock& block, int tri) {
     return tri > 0 && block.sceneIndex[tri] == block.sceneIndex[0];
+}
+
+// The lanes of a block that do not repeat its first triangle (repeatsFirst), lane 0 among them.
+RAYLAB_AVX2 inline unsigned distinctTriangles(const BvhTriangleBlock& block) {
+    const __m256i index = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(block.sceneIndex));
+    const __m256i first = _mm256_set1_epi32(static_cast<int>(block.sceneIndex[0]));
+    const auto repeats = static_cast<unsigned>(
+        _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(index, first))));
+    return (~repeats & 0xffu) | 1u;
 }
 
 // The closest hit per lane so far: (t, triangle) decides; u and v are held as e1 and e2 until

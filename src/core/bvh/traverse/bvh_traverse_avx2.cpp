@@ -15,9 +15,9 @@
 #if defined(__x86_64__) || defined(__i386__)
 
 #include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_block_ray.h"
 #include "bvh/traverse/bvh_box_ray.h"
 #include "bvh/traverse/bvh_wide_refs.h"
-#include "watertight_avx2.h"
 
 #include <cmath>
 #include <cstdint>
@@ -34,11 +34,7 @@ struct WideRay {
     // Box test: origin, 1/direction, offsets of the near and far bound in BvhWideNode's floats.
     __m256 origin[3], inverse[3];
     int nearOffset[3], farOffset[3];
-    __m256 tMin;
-    // Triangle test (WatertightRay): origin and vertex offsets in permuted order kx, ky, kz.
-    __m256 originK[3];
-    int vertexOffset[3];
-    __m256 shearX, shearY, shearZ, tMax;
+    BlockRay triangles; // the triangle test (WatertightRay's constants)
 };
 
 // Fills r for `ray`; false for the rays WatertightRay calls invalid (they hit nothing). The
@@ -73,14 +69,14 @@ RAYLAB_AVX2 inline bool makeWideRay(const Ray& ray, WideRay& r) {
         // lower[i] starts at float i * 8, upper[i] at 24 + i * 8.
         r.nearOffset[i] = nearIsUpper * 24 + i * kWideLanes;
         r.farOffset[i] = (1 - nearIsUpper) * 24 + i * kWideLanes;
-        r.originK[i] = _mm256_set1_ps(ray.origin[k[i]]);
-        r.vertexOffset[i] = k[i] * kWideLanes;
+        r.triangles.originK[i] = _mm256_set1_ps(ray.origin[k[i]]);
+        r.triangles.vertexOffset[i] = k[i] * kWideLanes;
     }
-    r.shearX = _mm256_set1_ps(q[0]);
-    r.shearY = _mm256_set1_ps(q[1]);
-    r.shearZ = _mm256_set1_ps(q[2]);
-    r.tMin = _mm256_set1_ps(ray.tMin);
-    r.tMax = _mm256_set1_ps(ray.tMax);
+    r.triangles.shearX = _mm256_set1_ps(q[0]);
+    r.triangles.shearY = _mm256_set1_ps(q[1]);
+    r.triangles.shearZ = _mm256_set1_ps(q[2]);
+    r.triangles.tMin = _mm256_set1_ps(ray.tMin);
+    r.triangles.tMax = _mm256_set1_ps(ray.tMax);
     return true;
 }
 
@@ -96,40 +92,13 @@ RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const WideRay& r, fl
         t1[a] = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b + r.farOffset[a]), r.origin[a]),
                               r.inverse[a]);
     }
-    const __m256 tn = _mm256_max_ps(_mm256_max_ps(t0[0], t0[1]), _mm256_max_ps(t0[2], r.tMin));
+    const __m256 tn =
+        _mm256_max_ps(_mm256_max_ps(t0[0], t0[1]), _mm256_max_ps(t0[2], r.triangles.tMin));
     const __m256 tf =
         _mm256_min_ps(_mm256_min_ps(t1[0], t1[1]), _mm256_min_ps(t1[2], _mm256_set1_ps(limit)));
     tNear = tn;
     hit = _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ);
     return _mm256_movemask_ps(hit);
-}
-
-// The watertight test of 8 triangles against the ray (watertight_avx2.h).
-RAYLAB_AVX2 inline LaneHits intersectBlock(const BvhTriangleBlock& block, const WideRay& r) {
-    const float* v = &block.vertex[0][0][0];
-    __m256 x[3], y[3], z[3]; // sheared a, b, c; z is a[kz] etc. before scaling
-    for (int k = 0; k < 3; ++k) {
-        const float* p = v + k * 3 * kWideLanes;
-        const __m256 dx = _mm256_sub_ps(_mm256_load_ps(p + r.vertexOffset[0]), r.originK[0]);
-        const __m256 dy = _mm256_sub_ps(_mm256_load_ps(p + r.vertexOffset[1]), r.originK[1]);
-        z[k] = _mm256_sub_ps(_mm256_load_ps(p + r.vertexOffset[2]), r.originK[2]);
-        x[k] = _mm256_sub_ps(dx, _mm256_mul_ps(r.shearX, z[k]));
-        y[k] = _mm256_sub_ps(dy, _mm256_mul_ps(r.shearY, z[k]));
-    }
-    return watertightLanes(x, y, z, r.shearZ, r.tMin, r.tMax);
-}
-
-// A lane's triangle through the scalar test (for lanes with an exactly zero edge function).
-inline bool intersectLane(const BvhTriangleBlock& block, int lane, const Ray& ray, float& t,
-                          float& u, float& v) {
-    const WatertightRay w(ray);
-    glm::vec3 p[3];
-    for (int k = 0; k < 3; ++k) {
-        for (int a = 0; a < 3; ++a) {
-            p[k][a] = block.vertex[k][a][lane];
-        }
-    }
-    return intersectTriangle(w, p[0], p[1], p[2], t, u, v);
 }
 
 struct StackEntry {
@@ -260,7 +229,7 @@ RAYLAB_AVX2 inline bool stepClosest(const Bvh& bvh, const WideRay& r, const Ray&
     } else {
         const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
         for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
-            const LaneHits h = intersectBlock(*block, r);
+            const LaneHits h = intersectBlock(*block, r.triangles);
             cost.block();
             const unsigned closer = h.hits & static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(
                                                  h.t, _mm256_set1_ps(limit), _CMP_LE_OQ)));
@@ -361,7 +330,7 @@ RAYLAB_AVX2 bool anyHitWideWith(const Bvh& bvh, const Ray& original, Cost cost) 
         } else {
             const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
             for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
-                const LaneHits h = intersectBlock(*block, r);
+                const LaneHits h = intersectBlock(*block, r.triangles);
                 cost.block();
                 if (h.hits != 0) {
                     return true;
