@@ -1,9 +1,9 @@
 #pragma once
 // One ray against the 8 triangles of a BvhTriangleBlock at once (internal to core; only files
 // that run on CPUs with AVX2 may include it): the single-ray traversal's leaf test
-// (bvh_traverse_avx2.cpp), which the 16-ray packets also use for a block that few of their lanes
-// reach (bvh_packet16_avx512.cpp). And one triangle of a block through the scalar test, for the
-// lanes watertight_avx2.h leaves to it.
+// (bvh_traverse_avx2.cpp), which the 8- and 16-ray packets also use, lane by lane, for a block
+// that few of their lanes reach (bvh_packet_avx2.cpp, bvh_packet16_avx512.cpp). And one triangle
+// of a block through the scalar test, for the lanes watertight_avx2.h leaves to it.
 
 #include "bvh/bvh_wide.h"
 #include "triangle_intersection.h"

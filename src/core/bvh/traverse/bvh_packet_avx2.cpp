@@ -109,7 +109,7 @@ RAYLAB_AVX2 inline void keepBlockLane(PacketBest& best, const BvhTriangleBlock& 
         return;
     }
     const __m256i lane = _mm256_set1_epi32(l);
-    LaneBest laneBest{_mm256_cvtss_f32(_mm256_permutevar8x32_ps(best.t, lane)),
+    LaneBest laneBest{_mm256_cvtss_f32(laneOf(best.t, l)),
                       static_cast<uint32_t>(
                           _mm256_cvtsi256_si32(_mm256_permutevar8x32_epi32(best.triangle, lane))),
                       0.0f, 0.0f, 1.0f}; // e1, e2, det: written with t
