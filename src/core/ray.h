@@ -29,4 +29,11 @@ struct Hit {
     bool found() const { return triangle != kNoTriangle; }
 };
 
+// Whether a hit at t on triangle `index` beats the closest so far (at bestT, on bestTriangle):
+// the nearer wins, and at equal t the lower index, so that no traversal's answer depends on the
+// order it tests triangles in.
+inline bool closerHit(float t, uint32_t index, float bestT, uint32_t bestTriangle) {
+    return t < bestT || (t == bestT && index < bestTriangle);
+}
+
 } // namespace raylab

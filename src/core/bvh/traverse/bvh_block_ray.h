@@ -71,7 +71,7 @@ RAYLAB_AVX2 inline bool keepBlockHits(LaneBest& best, const BvhTriangleBlock& bl
         for (unsigned m = h.hits; m != 0; m &= m - 1) {
             const int tri = __builtin_ctz(m);
             const uint32_t index = block.sceneIndex[tri];
-            if (t[tri] < best.t || (t[tri] == best.t && index < best.triangle)) {
+            if (closerHit(t[tri], index, best.t, best.triangle)) {
                 best = LaneBest{t[tri], index, e1[tri], e2[tri], det[tri]};
                 closer = true;
             }
@@ -81,8 +81,7 @@ RAYLAB_AVX2 inline bool keepBlockHits(LaneBest& best, const BvhTriangleBlock& bl
         const int tri = __builtin_ctz(m);
         const uint32_t index = block.sceneIndex[tri];
         float t, u, v;
-        if (intersectLane(block, tri, ray, t, u, v) &&
-            (t < best.t || (t == best.t && index < best.triangle))) {
+        if (intersectLane(block, tri, ray, t, u, v) && closerHit(t, index, best.t, best.triangle)) {
             best = LaneBest{t, index, u, v, 1.0f};
             closer = true;
         }

@@ -305,7 +305,7 @@ RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlo
                       static_cast<uint32_t>(_mm_cvtsi128_si32(
                           _mm512_castsi512_si128(_mm512_permutexvar_epi32(lane, best.triangle)))),
                       0.0f, 0.0f, 1.0f}; // e1, e2, det: written with t
-    if (keepBlockHits(laneBest, block, h, p.rays.rays[l / kPacketSize]->ray(l % kPacketSize))) {
+    if (keepBlockHits(laneBest, block, h, rayOf(p.rays, l))) {
         const auto only = static_cast<__mmask16>(1u << l);
         best.t = _mm512_mask_mov_ps(best.t, only, _mm512_set1_ps(laneBest.t));
         best.e1 = _mm512_mask_mov_ps(best.e1, only, _mm512_set1_ps(laneBest.e1));
@@ -318,8 +318,7 @@ RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlo
 
 // Whether lane l's ray hits one of the 8 triangles of a block (one test, as keepBlockLane).
 RAYLAB_AVX512 inline bool blockHitsLane(const BvhTriangleBlock& block, const Packet16& p, int l) {
-    return blockHit(block, intersectBlock(block, laneBlockRay(p, l)),
-                    p.rays.rays[l / kPacketSize]->ray(l % kPacketSize));
+    return blockHit(block, intersectBlock(block, laneBlockRay(p, l)), rayOf(p.rays, l));
 }
 
 // Tests the triangles of leaf `ref` against the lanes of `active`. Closest hit: keeps the lanes'

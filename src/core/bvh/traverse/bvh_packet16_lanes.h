@@ -40,6 +40,11 @@ struct PacketRays16 {
     const RayPacket* rays[2]; // lanes 0-7, 8-15: for the exact fallback
 };
 
+// Lane l's ray (for the lanes that go to the scalar or single-ray tests).
+inline Ray rayOf(const PacketRays16& p, int l) {
+    return p.rays[l / kPacketSize]->ray(l % kPacketSize);
+}
+
 RAYLAB_AVX512 inline void joinPacket(const PacketRays& low, const PacketRays& high,
                                      const RayPacket& lowRays, const RayPacket& highRays,
                                      PacketRays16& p) {
@@ -210,8 +215,7 @@ RAYLAB_AVX512 inline void keepExact16(PacketBest16& best, const BvhTriangleBlock
     _mm512_store_si512(bi, best.triangle);
     for (unsigned m = lanes; m != 0; m &= m - 1) {
         const int l = __builtin_ctz(m);
-        keepExactLane(block, tri, p.rays[l / kPacketSize]->ray(l % kPacketSize), l, bt, e1, e2, det,
-                      bi);
+        keepExactLane(block, tri, rayOf(p, l), l, bt, e1, e2, det, bi);
     }
     best.t = _mm512_load_ps(bt);
     best.e1 = _mm512_load_ps(e1);
@@ -240,7 +244,7 @@ RAYLAB_AVX512 inline unsigned hitLanes16(const BvhTriangleBlock& block, int tri,
     for (unsigned m = h.exact & active & ~hit; m != 0; m &= m - 1) {
         const int l = __builtin_ctz(m);
         float t, u, v;
-        if (intersectLane(block, tri, p.rays[l / kPacketSize]->ray(l % kPacketSize), t, u, v)) {
+        if (intersectLane(block, tri, rayOf(p, l), t, u, v)) {
             hit |= 1u << l;
         }
     }

@@ -104,8 +104,7 @@ inline void keepExactLane(const BvhTriangleBlock& block, int tri, const Ray& ray
                           float* e1, float* e2, float* det, uint32_t* triangle) {
     const uint32_t index = block.sceneIndex[tri];
     float tHit, u, v;
-    if (intersectLane(block, tri, ray, tHit, u, v) &&
-        (tHit < t[l] || (tHit == t[l] && index < triangle[l]))) {
+    if (intersectLane(block, tri, ray, tHit, u, v) && closerHit(tHit, index, t[l], triangle[l])) {
         t[l] = tHit;
         e1[l] = u;
         e2[l] = v;

@@ -83,7 +83,7 @@ struct ClosestTest {
     bool operator()(const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2, uint32_t index) {
         float t, u, v;
         if (intersectTriangle(ray, v0, v1, v2, t, u, v) &&
-            (t < best.t || (t == best.t && index < best.triangle))) {
+            closerHit(t, index, best.t, best.triangle)) {
             best = Hit{t, u, v, index};
             limit = t;
         }

@@ -242,7 +242,7 @@ RAYLAB_AVX2 inline bool stepClosest(const Bvh& bvh, const WideRay& r, const Ray&
                 for (unsigned m = closer; m != 0; m &= m - 1) {
                     const int lane = __builtin_ctz(m);
                     const uint32_t index = block->sceneIndex[lane];
-                    if (t[lane] < best.t || (t[lane] == best.t && index < best.triangle)) {
+                    if (closerHit(t[lane], index, best.t, best.triangle)) {
                         // u = e1 / det and v = e2 / det once the winner is known.
                         best = Hit{t[lane], e1[lane], e2[lane], index};
                         bestDet = det[lane];
@@ -255,7 +255,7 @@ RAYLAB_AVX2 inline bool stepClosest(const Bvh& bvh, const WideRay& r, const Ray&
                 const uint32_t index = block->sceneIndex[lane];
                 float t, u, v;
                 if (intersectLane(*block, lane, original, t, u, v) &&
-                    (t < best.t || (t == best.t && index < best.triangle))) {
+                    closerHit(t, index, best.t, best.triangle)) {
                     best = Hit{t, u, v, index};
                     bestDet = 1.0f; // u and v are final
                     limit = best.t;
