@@ -154,22 +154,47 @@ uint32_t leftCountOf(const BinSet& bins, const ObjectSplit& split) {
     return n;
 }
 
+namespace {
+
+// partitionRecords on one axis (a template argument, so that the loop reads the centroid's
+// coordinate without a switch), the split's numbers and both sides' bounds in locals: with the
+// bounds behind references every record's update went through memory and waited on the last
+// one, and the split was read again after every store (it might have been overwritten). The
+// side is a branch: GCC compiled the earlier select of the side's pointer into one too.
+template <int axis>
+void partitionOnAxis(const PrimRecord* first, const PrimRecord* last, const ObjectSplit& split,
+                     PrimRecord* left, PrimRecord* right, RecordBounds& leftBounds,
+                     RecordBounds& rightBounds) {
+    const float lower = split.lower[axis], scale = split.scale[axis];
+    const int bins = split.bins, leftBins = split.bin;
+    RecordBounds l = leftBounds, r = rightBounds;
+    for (const PrimRecord* p = first; p != last; ++p) {
+        const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
+        if (binOf(p->lower[axis] + p->upper[axis], lower, scale, bins) < leftBins) {
+            _mm_storeu_ps(&left->lower.x, lo);
+            _mm_storeu_ps(&left->upper.x, hi);
+            ++left;
+            l.add(lo, hi);
+        } else {
+            _mm_storeu_ps(&right->lower.x, lo);
+            _mm_storeu_ps(&right->upper.x, hi);
+            ++right;
+            r.add(lo, hi);
+        }
+    }
+    leftBounds = l;
+    rightBounds = r;
+}
+
+} // namespace
+
 void partitionRecords(const PrimRecord* first, const PrimRecord* last, const ObjectSplit& split,
                       PrimRecord* left, PrimRecord* right, RecordBounds& leftBounds,
                       RecordBounds& rightBounds) {
-    const int a = split.axis;
-    const float lower = split.lower[a], scale = split.scale[a];
-    // Without branches (the side is as good as random): the record goes where its side's
-    // pointer says, and only that pointer moves on.
-    for (const PrimRecord* r = first; r != last; ++r) {
-        const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
-        const bool isLeft = binOf(r->lower[a] + r->upper[a], lower, scale, split.bins) < split.bin;
-        PrimRecord* to = isLeft ? left : right;
-        _mm_storeu_ps(&to->lower.x, lo);
-        _mm_storeu_ps(&to->upper.x, hi);
-        left += isLeft ? 1 : 0;
-        right += isLeft ? 0 : 1;
-        (isLeft ? leftBounds : rightBounds).add(lo, hi);
+    switch (split.axis) {
+    case 0: partitionOnAxis<0>(first, last, split, left, right, leftBounds, rightBounds); break;
+    case 1: partitionOnAxis<1>(first, last, split, left, right, leftBounds, rightBounds); break;
+    default: partitionOnAxis<2>(first, last, split, left, right, leftBounds, rightBounds); break;
     }
 }
 
