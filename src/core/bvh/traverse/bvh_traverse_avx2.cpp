@@ -152,10 +152,15 @@ RAYLAB_AVX2 inline uint32_t pushChildren(const BvhWideNode& node, int mask, __m2
     __m256i* top = reinterpret_cast<__m256i*>(stack + size);
     _mm256_storeu_si256(top, _mm256_permute2x128_si256(lo, hi, 0x20));
     _mm256_storeu_si256(top + 1, _mm256_permute2x128_si256(lo, hi, 0x31));
-    const int n = __builtin_popcount(static_cast<unsigned>(mask));
-    size += n - 1;
-    return static_cast<uint32_t>(
-        _mm256_cvtsi256_si32(_mm256_permutevar8x32_epi32(refs, _mm256_set1_epi32(n - 1))));
+    size += __builtin_popcount(static_cast<unsigned>(mask)) - 1;
+    // The nearest, the last entry written (not pushed), is the hit lanes' smallest key: found by
+    // a reduction of its own, so that the walk goes on without waiting for the sort.
+    __m256i smallest =
+        _mm256_blendv_epi8(_mm256_set1_epi32(INT32_MAX), keys, _mm256_castps_si256(hit));
+    smallest = _mm256_min_epi32(smallest, _mm256_shuffle_epi32(smallest, 0xb1));
+    smallest = _mm256_min_epi32(smallest, _mm256_shuffle_epi32(smallest, 0x4e));
+    smallest = _mm256_min_epi32(smallest, _mm256_permute2x128_si256(smallest, smallest, 0x01));
+    return node.child[_mm256_cvtsi256_si32(smallest) & 7];
 }
 
 // What a traversal counts: nothing (the renderer's), or a TraversalCost.
