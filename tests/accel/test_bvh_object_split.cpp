@@ -4,6 +4,7 @@
 
 #include "core/bvh/build/bvh_build_object_split.h"
 
+#include <cstring>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -80,6 +81,91 @@ TEST(BvhObjectSplit, SweepOfUsedBinsMatchesEveryPlane) {
         EXPECT_EQ(leftCountOf(binned, got), want.leftCount) << "trial " << trial;
     }
     EXPECT_GT(splits, 500);
+}
+
+// The bins of records added one at a time, each to its bin on every axis (binOf).
+BinSet binOneByOne(const RecordVector& records, const ObjectSplit& frame) {
+    BinSet bins;
+    bins.reset(frame.bins);
+    for (const PrimRecord& r : records) {
+        for (int a = 0; a < 3; ++a) {
+            const int b =
+                binOf(r.lower[a] + r.upper[a], frame.lower[a], frame.scale[a], frame.bins);
+            bins.box[a][b].extend(_mm_loadu_ps(&r.lower.x), _mm_loadu_ps(&r.upper.x));
+            ++bins.count[a][b];
+        }
+    }
+    return bins;
+}
+
+// Lanes x, y and z of two registers hold the same bits (zeros' signs included).
+bool sameBits(__m128 a, __m128 b) {
+    alignas(16) float x[4], y[4];
+    _mm_store_ps(x, a);
+    _mm_store_ps(y, b);
+    return std::memcmp(x, y, 3 * sizeof(float)) == 0;
+}
+
+// binRecords takes records two at a time and writes a pair that shares a bin once: its bins
+// must be those of the records added one by one, bit for bit, whether neighbours share their
+// bins on every axis, on some or on none, for odd and even counts, with zeros of both signs.
+TEST(BvhObjectSplit, BinsMatchRecordsAddedOneByOne) {
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> cell(0, 3), choice(0, 3);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    int pairsSharing[4] = {}; // pairs of records binRecords takes together, by axes shared
+    for (int trial = 0; trial < 400; ++trial) {
+        const int count = 1 + trial % 37;
+        const int bins = trial % 2 == 0 ? 16 : 5;
+        RecordVector records;
+        glm::vec3 at(0.0f);
+        for (int i = 0; i < count; ++i) {
+            // Mostly a neighbour of the previous record (often in its bins), sometimes a jump;
+            // coordinates on a coarse grid, so that equal bounds with zeros of either sign occur.
+            if (i == 0 || choice(rng) == 0) {
+                at = glm::vec3(static_cast<float>(cell(rng)), static_cast<float>(cell(rng)),
+                               static_cast<float>(cell(rng)));
+            } else if (choice(rng) == 1) {
+                at[choice(rng) % 3] = static_cast<float>(cell(rng));
+            }
+            glm::vec3 lower = at - 0.25f * static_cast<float>(cell(rng)),
+                      upper = at + 0.5f * unit(rng);
+            for (int a = 0; a < 3; ++a) {
+                if (lower[a] == 0.0f && choice(rng) < 2) {
+                    lower[a] = -0.0f;
+                }
+            }
+            records.push_back({lower, static_cast<uint32_t>(i), upper, 0.0f});
+        }
+        const RecordBounds bounds = boundsOf(records.data(), records.data() + count);
+        const ObjectSplit frame = objectBinFrame(bounds.centres.toAabb(), bins);
+        for (int i = 0; i + 1 < count; i += 2) {
+            int sharedAxes = 0;
+            for (int a = 0; a < 3; ++a) {
+                const auto binOn = [&](const PrimRecord& r) {
+                    return binOf(r.lower[a] + r.upper[a], frame.lower[a], frame.scale[a], bins);
+                };
+                sharedAxes += binOn(records[i]) == binOn(records[i + 1]) ? 1 : 0;
+            }
+            ++pairsSharing[sharedAxes];
+        }
+        BinSet got;
+        got.reset(bins);
+        binRecords(records.data(), records.data() + count, frame.lower, frame.scale, bins, got);
+        const BinSet want = binOneByOne(records, frame);
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < bins; ++b) {
+                ASSERT_EQ(got.count[a][b], want.count[a][b]) << "trial " << trial;
+                ASSERT_TRUE(sameBits(got.box[a][b].lower, want.box[a][b].lower))
+                    << "trial " << trial << " axis " << a << " bin " << b;
+                ASSERT_TRUE(sameBits(got.box[a][b].upper, want.box[a][b].upper))
+                    << "trial " << trial << " axis " << a << " bin " << b;
+            }
+        }
+    }
+    for (int axes = 0; axes <= 3; ++axes) {
+        EXPECT_GT(pairsSharing[axes], 200) << "pairs sharing their bins on " << axes << " axes";
+    }
 }
 
 } // namespace

@@ -142,9 +142,33 @@ inline int binOf(float c, float lower, float scale, int bins) {
     return static_cast<int>(x);
 }
 
-// Bins records [first, last) on all three axes at once, adding to what `out` holds. Records
-// go two at a time, and two in the same bin update it once: neighbours often share a bin, and
-// each update waits for the previous one of its bin.
+// One axis of a pair of records in binRecords: record 0 (lo, hi) in bin b, record 1 (lo1, hi1)
+// in bin c, `same` all ones in lane `axis` where b == c, (unionLo, unionHi) the pair's box. Both
+// bins are read before either is written, bin c first and bin b last, so that where b == c the
+// last write holds the pair's union and a count of two. No branch on b == c: whether
+// neighbours share a bin is hard to predict, and a bin's update waits for its previous one
+// anyway. The same boxes, bit for bit, as adding the records one at a time.
+template <int axis>
+inline void binPair(BinSet& out, int b, int c, __m128 same, __m128 lo, __m128 hi, __m128 lo1,
+                    __m128 hi1, __m128 unionLo, __m128 unionHi) {
+    const __m128 shared = _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(same), axis * 0x55));
+    const __m128 firstLo = _mm_or_ps(_mm_and_ps(shared, unionLo), _mm_andnot_ps(shared, lo));
+    const __m128 firstHi = _mm_or_ps(_mm_and_ps(shared, unionHi), _mm_andnot_ps(shared, hi));
+    SseBox& boxB = out.box[axis][b];
+    SseBox& boxC = out.box[axis][c];
+    const __m128 lowerB = boxB.lower, upperB = boxB.upper;
+    const __m128 lowerC = boxC.lower, upperC = boxC.upper;
+    const uint32_t countB = out.count[axis][b], countC = out.count[axis][c];
+    boxC.lower = _mm_min_ps(lowerC, lo1);
+    boxC.upper = _mm_max_ps(upperC, hi1);
+    out.count[axis][c] = countC + 1;
+    boxB.lower = _mm_min_ps(lowerB, firstLo);
+    boxB.upper = _mm_max_ps(upperB, firstHi);
+    out.count[axis][b] = countB + 1 + static_cast<uint32_t>(b == c);
+}
+
+// Bins records [first, last) on all three axes at once, adding to what `out` holds, two records
+// at a time (binPair).
 inline void binRecords(const PrimRecord* first, const PrimRecord* last, const glm::vec3& lower,
                        const glm::vec3& scale, int bins, BinSet& out) {
     const __m128 lo4 = _mm_setr_ps(lower.x, lower.y, lower.z, 0.0f);
@@ -159,19 +183,14 @@ inline void binRecords(const PrimRecord* first, const PrimRecord* last, const gl
     for (; last - r >= 2; r += 2) {
         const __m128 lo = _mm_loadu_ps(&r[0].lower.x), hi = _mm_loadu_ps(&r[0].upper.x);
         const __m128 lo1 = _mm_loadu_ps(&r[1].lower.x), hi1 = _mm_loadu_ps(&r[1].upper.x);
-        _mm_store_si128(reinterpret_cast<__m128i*>(b), binOf4(lo, hi));
-        _mm_store_si128(reinterpret_cast<__m128i*>(c), binOf4(lo1, hi1));
-        for (int a = 0; a < 3; ++a) {
-            if (b[a] == c[a]) {
-                out.box[a][b[a]].extend(_mm_min_ps(lo, lo1), _mm_max_ps(hi, hi1));
-                out.count[a][b[a]] += 2;
-            } else {
-                out.box[a][b[a]].extend(lo, hi);
-                ++out.count[a][b[a]];
-                out.box[a][c[a]].extend(lo1, hi1);
-                ++out.count[a][c[a]];
-            }
-        }
+        const __m128i bin0 = binOf4(lo, hi), bin1 = binOf4(lo1, hi1);
+        _mm_store_si128(reinterpret_cast<__m128i*>(b), bin0);
+        _mm_store_si128(reinterpret_cast<__m128i*>(c), bin1);
+        const __m128 same = _mm_castsi128_ps(_mm_cmpeq_epi32(bin0, bin1));
+        const __m128 unionLo = _mm_min_ps(lo, lo1), unionHi = _mm_max_ps(hi, hi1);
+        binPair<0>(out, b[0], c[0], same, lo, hi, lo1, hi1, unionLo, unionHi);
+        binPair<1>(out, b[1], c[1], same, lo, hi, lo1, hi1, unionLo, unionHi);
+        binPair<2>(out, b[2], c[2], same, lo, hi, lo1, hi1, unionLo, unionHi);
     }
     if (r != last) {
         const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
