@@ -33,9 +33,9 @@ Scene makeCluttered(int smallCount, uint32_t seed) {
     return scene;
 }
 
-// The first n elements of x and y hold the same bytes (memcmp must not see the null pointer of
-// an empty vector).
-template <typename T> bool sameBytes(const std::vector<T>& x, const std::vector<T>& y) {
+// x and y hold the same bytes (memcmp must not see the null pointer of an empty vector).
+template <typename Vector> bool sameBytes(const Vector& x, const Vector& y) {
+    using T = typename Vector::value_type;
     return x.size() == y.size() &&
            (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(T)) == 0);
 }

@@ -10,6 +10,7 @@
 #include "bvh/bvh_wide.h"
 #include "ray.h"
 #include "scene.h"
+#include "uninitialised_allocator.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -56,8 +57,10 @@ struct Bvh {
 
     // The SIMD form (bvh_wide.h), built when the CPU runs AVX2 and BvhBuildOptions::simd is set.
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.
-    std::vector<BvhWideNode> wideNodes;           // wideNodes[0] is the root
-    std::vector<BvhTriangleBlock> triangleBlocks; // leaf order
+    // wideNodes[0] is the root; the blocks are in leaf order. resize() leaves new elements
+    // unwritten: the build writes each one once, on the thread that fills it.
+    std::vector<BvhWideNode, UninitialisedAllocator<BvhWideNode>> wideNodes;
+    std::vector<BvhTriangleBlock, UninitialisedAllocator<BvhTriangleBlock>> triangleBlocks;
 
     // Leaf triangle i of a binary leaf (BvhNode::index <= i < index + count).
     BvhTriangle leafTriangle(uint32_t i) const;

@@ -3,12 +3,10 @@
 // of a range of primitive records, and their SAH bins. One record's box is one 128-bit register.
 
 #include "aabb.h"
+#include "uninitialised_allocator.h"
 
 #include <cstdint>
 #include <emmintrin.h>
-#include <memory>
-#include <new>
-#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -26,22 +24,8 @@ struct PrimRecord {
 };
 static_assert(sizeof(PrimRecord) == 32);
 
-// An allocator whose resize() leaves new elements default-initialised (for PrimRecord: not
-// written), since the build writes every record it makes room for.
-template <typename T> struct UninitialisedAllocator : std::allocator<T> {
-    template <typename U> struct rebind { using other = UninitialisedAllocator<U>; };
-    UninitialisedAllocator() = default;
-    template <typename U> UninitialisedAllocator(const UninitialisedAllocator<U>&) {}
-    template <typename U, typename... Args> void construct(U* p, Args&&... args) {
-        if constexpr (sizeof...(Args) == 0) {
-            ::new (static_cast<void*>(p)) U;
-        } else {
-            ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-        }
-    }
-};
-
-// The build's arrays of references.
+// The build's arrays of references (resize() leaves them unwritten: the build writes every
+// record it makes room for).
 using RecordVector = std::vector<PrimRecord, UninitialisedAllocator<PrimRecord>>;
 
 struct SseBox {

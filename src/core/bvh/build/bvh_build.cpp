@@ -301,7 +301,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     std::vector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices);
     subtrees = {};
-    if (wide && !buildWideBvh(bvh, scene, sceneIndices, team)) {
+    if (wide && !buildWideBvh(bvh, scene, sceneIndices, options.keepBinaryNodes, team)) {
         // The tree does not fit the wide form: the binary form keeps its own triangles.
         bvh.triangles.resize(sceneIndices.size());
         for (std::size_t i = 0; i < sceneIndices.size(); ++i) {

@@ -76,12 +76,14 @@ struct BinaryTree {
     const Scene& scene;
     const std::vector<uint32_t>& leafScene; // leaf triangle -> scene triangle
     std::vector<Range> ranges;              // per binary node
-    std::vector<uint32_t> slotOf;           // leaf triangle -> its lane in the BVH's blocks
-    std::vector<bool> leaf;                 // per binary node: it becomes one wide leaf
+    // Leaf triangle -> its lane in the BVH's blocks; empty when the binary leaves are not to
+    // be pointed at the blocks.
+    std::vector<uint32_t> slotOf;
+    std::vector<bool> leaf; // per binary node: it becomes one wide leaf
 
-    BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves)
-        : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()), slotOf(leaves.size()),
-          leaf(b.nodes.size()) {
+    BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves, bool slots)
+        : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()),
+          slotOf(slots ? leaves.size() : 0), leaf(b.nodes.size()) {
         // Children always follow their parent, so a backwards pass sees children first.
         for (std::size_t i = b.nodes.size(); i-- > 0;) {
             const BvhNode& n = b.nodes[i];
@@ -281,7 +283,7 @@ void relocate(WidePart& part, uint32_t nodeOffset) {
 }
 
 // Writes a placed part's leaves into its blocks of `blocks` (the BVH's array), their spare
-// lanes, and the lanes of its leaf triangles into tree.slotOf.
+// lanes, and the lanes of its leaf triangles into tree.slotOf (unless that is empty).
 void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* blocks) {
     for (const LeafPlacement& leaf : part.leaves) {
         const uint32_t firstSlot = (part.firstBlock + leaf.block) * kWideLanes + leaf.lane;
@@ -298,7 +300,9 @@ void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* block
                 }
             }
             block.sceneIndex[lane] = tree.leafScene[i];
-            tree.slotOf[i] = slot;
+            if (!tree.slotOf.empty()) {
+                tree.slotOf[i] = slot;
+            }
         }
     }
     for (std::size_t b = 0; b < part.lanesUsed.size(); ++b) {
@@ -317,13 +321,13 @@ void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* block
 } // namespace
 
 bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
-                  BuildTeam& team) {
+                  bool pointBinaryLeaves, BuildTeam& team) {
     bvh.wideNodes.clear();
     bvh.triangleBlocks.clear();
     if (bvh.nodes.empty()) {
         return false;
     }
-    BinaryTree tree(bvh, scene, leafScene);
+    BinaryTree tree(bvh, scene, leafScene, pointBinaryLeaves);
     WidePart top;
     std::vector<PendingPart> pending;
     const uint32_t deferBelow =
@@ -355,8 +359,8 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
     if (overflow || blocks > kWideFirstBlockMask || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
         return false;
     }
-    // Every node and block is written below (value-initialised first by resize): allocated,
-    // advised huge pages (huge_pages.h), then first touched.
+    // Every node and block is written below, once (resize leaves them unwritten): allocated,
+    // advised huge pages (huge_pages.h), then first touched by the thread that fills it.
     bvh.wideNodes.reserve(nodes);
     adviseHugePages(bvh.wideNodes.data(), nodes * sizeof(BvhWideNode));
     bvh.wideNodes.resize(nodes);
@@ -374,9 +378,11 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
 
     // Points the binary leaves at the blocks' lanes. A binary leaf lies inside one wide leaf,
     // whose triangles are consecutive lanes in leaf order, so its triangles stay consecutive.
-    for (BvhNode& node : bvh.nodes) {
-        if (node.isLeaf()) {
-            node.index = tree.slotOf[node.index];
+    if (pointBinaryLeaves) {
+        for (BvhNode& node : bvh.nodes) {
+            if (node.isLeaf()) {
+                node.index = tree.slotOf[node.index];
+            }
         }
     }
     return true;

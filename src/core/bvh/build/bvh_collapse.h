@@ -19,12 +19,13 @@ inline constexpr int kWideStackSize = 512;
 inline constexpr uint32_t kLeafMerge = 8;
 
 // Fills bvh.wideNodes and bvh.triangleBlocks from bvh.nodes, whose leaves hold leaf triangles
-// [index, index + count), leaf triangle i being scene.triangles[leafScene[i]]; then points the
-// binary leaves at the blocks' lanes (see Bvh::triangles) and returns true. Returns false, with
-// the wide form empty and bvh.nodes unchanged, when the tree does not fit the wide form. The
-// top of the wide tree is made on the calling thread, its subtrees on the team; the result
-// does not depend on the team's size.
+// [index, index + count), leaf triangle i being scene.triangles[leafScene[i]]; then, with
+// `pointBinaryLeaves` (for a BVH that keeps its binary nodes), points the binary leaves at the
+// blocks' lanes (see Bvh::triangles), and returns true. Returns false, with the wide form empty
+// and bvh.nodes unchanged, when the tree does not fit the wide form. The top of the wide tree is
+// made on the calling thread, its subtrees on the team; the result does not depend on the
+// team's size.
 bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
-                  BuildTeam& team);
+                  bool pointBinaryLeaves, BuildTeam& team);
 
 } // namespace raylab
