@@ -4,6 +4,7 @@
 
 #include "core/bvh/build/bvh_build_object_split.h"
 
+#include <algorithm>
 #include <cstring>
 #include <gtest/gtest.h>
 #include <random>
@@ -166,6 +167,77 @@ TEST(BvhObjectSplit, BinsMatchRecordsAddedOneByOne) {
     for (int axes = 0; axes <= 3; ++axes) {
         EXPECT_GT(pairsSharing[axes], 200) << "pairs sharing their bins on " << axes << " axes";
     }
+}
+
+bool sameBounds(const RecordBounds& a, const RecordBounds& b) {
+    return sameBits(a.box.lower, b.box.lower) && sameBits(a.box.upper, b.box.upper) &&
+           sameBits(a.centres.lower, b.centres.lower) && sameBits(a.centres.upper, b.centres.upper);
+}
+
+// partitionRecords against a plain stable partition by binOf, each side's bounds added in order:
+// the same records in the same places and the same bounds, bit for bit, whether neighbouring
+// records mostly go the same way (sorted along the axis: the partition's branch loop) or at
+// random (shuffled: its select loop), on every axis and for every plane.
+TEST(BvhObjectSplit, PartitionIsAStablePartitionInAnyOrder) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> grid(-2, 2);
+    int cases = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const int count = trial % 3 == 0 ? 15 + trial : 300 + 37 * trial;
+        RecordVector records;
+        for (int i = 0; i < count; ++i) {
+            // Coarse coordinates half the time, so that equal bounds and zeros of both signs
+            // occur.
+            glm::vec3 at = trial % 2 == 0 ? glm::vec3(unit(rng), unit(rng), unit(rng))
+                                          : glm::vec3(static_cast<float>(grid(rng)),
+                                                      static_cast<float>(grid(rng)), 0.0f);
+            if (trial % 2 != 0 && i % 2 == 0) {
+                at.z = -0.0f;
+            }
+            const glm::vec3 size = 0.2f * glm::abs(glm::vec3(unit(rng), unit(rng), unit(rng)));
+            records.push_back({at - size, static_cast<uint32_t>(i), at + size, 0.0f});
+        }
+        const int axis = trial % 3;
+        if (trial % 4 < 2) { // sorted along the axis: long runs on each side
+            std::sort(records.begin(), records.end(),
+                      [&](const PrimRecord& a, const PrimRecord& b) {
+                          return a.centroid()[axis] < b.centroid()[axis];
+                      });
+        }
+        const RecordBounds all = boundsOf(records.data(), records.data() + count);
+        ObjectSplit split = objectBinFrame(all.centres.toAabb(), 16);
+        if (!(split.scale[axis] > 0.0f)) {
+            continue;
+        }
+        split.axis = axis;
+        for (int bin = 1; bin < split.bins; ++bin) {
+            split.bin = bin;
+            RecordVector wantLeft, wantRight;
+            RecordBounds wantLeftBounds, wantRightBounds;
+            for (const PrimRecord& r : records) {
+                const bool isLeft = binOf(r.lower[axis] + r.upper[axis], split.lower[axis],
+                                          split.scale[axis], split.bins) < bin;
+                (isLeft ? wantLeft : wantRight).push_back(r);
+                (isLeft ? wantLeftBounds : wantRightBounds).add(r);
+            }
+            RecordVector out(records.size());
+            RecordBounds leftBounds, rightBounds;
+            partitionRecords(records.data(), records.data() + count, split, out.data(),
+                             out.data() + wantLeft.size(), leftBounds, rightBounds);
+            ASSERT_EQ(
+                std::memcmp(out.data(), wantLeft.data(), wantLeft.size() * sizeof(PrimRecord)), 0)
+                << "trial " << trial << " bin " << bin;
+            ASSERT_EQ(std::memcmp(out.data() + wantLeft.size(), wantRight.data(),
+                                  wantRight.size() * sizeof(PrimRecord)),
+                      0)
+                << "trial " << trial << " bin " << bin;
+            ASSERT_TRUE(sameBounds(leftBounds, wantLeftBounds)) << "trial " << trial;
+            ASSERT_TRUE(sameBounds(rightBounds, wantRightBounds)) << "trial " << trial;
+            ++cases;
+        }
+    }
+    EXPECT_GT(cases, 600);
 }
 
 } // namespace

@@ -159,18 +159,35 @@ namespace {
 // partitionRecords on one axis (a template argument, so that the loop reads the centroid's
 // coordinate without a switch), the split's numbers and both sides' bounds in locals: with the
 // bounds behind references every record's update went through memory and waited on the last
-// one, and the split was read again after every store (it might have been overwritten). The
-// side is a branch: GCC compiled the earlier select of the side's pointer into one too.
+// one, and the split was read again after every store (it might have been overwritten).
+//
+// Two loops give the same result. Where neighbouring records mostly go the same way (meshes
+// stored surface patch by patch, as scans and modelling tools write them), a branch on the side
+// predicts well and is the faster. Where they do not (a mesh in random order), the branch
+// misses about every other record; there the side is a select: each record is stored at the
+// side's next place and added to both sides' bounds through a clamp to an infinity on the side
+// it is not on (max(value, -inf) keeps a value for a minimum, max(value, +inf) is neutral; the
+// upper bounds alike), so the bounds are those of the records each side gets, bit for bit. The
+// first kProbe records go by the branch, and how often the side changes among them chooses the
+// loop for the rest.
 template <int axis>
 void partitionOnAxis(const PrimRecord* first, const PrimRecord* last, const ObjectSplit& split,
                      PrimRecord* left, PrimRecord* right, RecordBounds& leftBounds,
                      RecordBounds& rightBounds) {
+    constexpr std::ptrdiff_t kProbe = 16;
+    constexpr int kMostChanges = kProbe / 4; // more changes than this: the select loop
     const float lower = split.lower[axis], scale = split.scale[axis];
-    const int bins = split.bins, leftBins = split.bin;
+    // binOf(c) < bin exactly where (c - lower) * scale < bin (bin > 0): below 0 binOf clamps to
+    // 0, above bins - 1 to bins - 1 >= bin, and between it truncates.
+    const auto leftBelow = static_cast<float>(split.bin);
     RecordBounds l = leftBounds, r = rightBounds;
-    for (const PrimRecord* p = first; p != last; ++p) {
-        const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
-        if (binOf(p->lower[axis] + p->upper[axis], lower, scale, bins) < leftBins) {
+    const PrimRecord* p = first;
+    const PrimRecord* probeEnd = last - first > kProbe ? first + kProbe : last;
+    // One record by the branch; returns its side.
+    const auto byBranch = [&](const PrimRecord* q) {
+        const __m128 lo = _mm_loadu_ps(&q->lower.x), hi = _mm_loadu_ps(&q->upper.x);
+        const bool isLeft = (q->lower[axis] + q->upper[axis] - lower) * scale < leftBelow;
+        if (isLeft) {
             _mm_storeu_ps(&left->lower.x, lo);
             _mm_storeu_ps(&left->upper.x, hi);
             ++left;
@@ -180,6 +197,50 @@ void partitionOnAxis(const PrimRecord* first, const PrimRecord* last, const Obje
             _mm_storeu_ps(&right->upper.x, hi);
             ++right;
             r.add(lo, hi);
+        }
+        return isLeft;
+    };
+    int changes = 0;
+    bool wasLeft = true;
+    for (; p != probeEnd; ++p) {
+        const bool isLeft = byBranch(p);
+        changes += p != first && isLeft != wasLeft ? 1 : 0;
+        wasLeft = isLeft;
+    }
+    if (changes <= kMostChanges) {
+        for (; p != last; ++p) {
+            byBranch(p);
+        }
+    } else {
+        const __m128 lower4 = _mm_set1_ps(lower), scale4 = _mm_set1_ps(scale);
+        const __m128 leftBelow4 = _mm_set1_ps(leftBelow);
+        const __m128 infinity = _mm_set1_ps(kInfinity), sign = _mm_set1_ps(-0.0f);
+        for (; p != last; ++p) {
+            const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
+            const __m128 c = _mm_add_ps(lo, hi);
+            const __m128 below =
+                _mm_cmplt_ps(_mm_mul_ps(_mm_sub_ps(c, lower4), scale4), leftBelow4);
+            const __m128 isLeft =
+                _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(below), axis * 0x55));
+            const auto toLeft = static_cast<uintptr_t>(
+                -static_cast<intptr_t>((_mm_movemask_ps(below) >> axis) & 1));
+            const auto lp = reinterpret_cast<uintptr_t>(left);
+            const auto rp = reinterpret_cast<uintptr_t>(right);
+            auto* to = reinterpret_cast<PrimRecord*>(rp ^ ((lp ^ rp) & toLeft));
+            _mm_storeu_ps(&to->lower.x, lo);
+            _mm_storeu_ps(&to->upper.x, hi);
+            left += toLeft & 1;
+            right += 1 - (toLeft & 1);
+            const __m128 minusIfLeft = _mm_or_ps(_mm_and_ps(isLeft, sign), infinity); // -inf/+inf
+            const __m128 plusIfLeft = _mm_xor_ps(minusIfLeft, sign);                  // +inf/-inf
+            l.box.lower = _mm_min_ps(l.box.lower, _mm_max_ps(lo, minusIfLeft));
+            l.box.upper = _mm_max_ps(l.box.upper, _mm_min_ps(hi, plusIfLeft));
+            l.centres.lower = _mm_min_ps(l.centres.lower, _mm_max_ps(c, minusIfLeft));
+            l.centres.upper = _mm_max_ps(l.centres.upper, _mm_min_ps(c, plusIfLeft));
+            r.box.lower = _mm_min_ps(r.box.lower, _mm_max_ps(lo, plusIfLeft));
+            r.box.upper = _mm_max_ps(r.box.upper, _mm_min_ps(hi, minusIfLeft));
+            r.centres.lower = _mm_min_ps(r.centres.lower, _mm_max_ps(c, plusIfLeft));
+            r.centres.upper = _mm_max_ps(r.centres.upper, _mm_min_ps(c, minusIfLeft));
         }
     }
     leftBounds = l;
