@@ -126,6 +126,13 @@ inline int binOf(float c, float lower, float scale, int bins) {
     return static_cast<int>(x);
 }
 
+// binOf(c, lower, scale, bins) < bin, for 0 < bin < bins, without the clamps: below 0 binOf
+// clamps to bin 0, above bins - 1 to bins - 1 >= bin, and between it truncates. The partition
+// (bvh_build_object_split.cpp) sorts records by it, in SSE lanes too.
+inline bool binIsBelow(float c, float lower, float scale, int bin) {
+    return (c - lower) * scale < static_cast<float>(bin);
+}
+
 // One axis of a pair of records in binRecords: record 0 (lo, hi) in bin b, record 1 (lo1, hi1)
 // in bin c, `same` all ones in lane `axis` where b == c, (unionLo, unionHi) the pair's box. Both
 // bins are read before either is written, bin c first and bin b last, so that where b == c the

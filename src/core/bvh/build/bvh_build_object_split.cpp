@@ -177,16 +177,14 @@ void partitionOnAxis(const PrimRecord* first, const PrimRecord* last, const Obje
     constexpr std::ptrdiff_t kProbe = 16;
     constexpr int kMostChanges = kProbe / 4; // more changes than this: the select loop
     const float lower = split.lower[axis], scale = split.scale[axis];
-    // binOf(c) < bin exactly where (c - lower) * scale < bin (bin > 0): below 0 binOf clamps to
-    // 0, above bins - 1 to bins - 1 >= bin, and between it truncates.
-    const auto leftBelow = static_cast<float>(split.bin);
+    const int bin = split.bin;
     RecordBounds l = leftBounds, r = rightBounds;
     const PrimRecord* p = first;
     const PrimRecord* probeEnd = last - first > kProbe ? first + kProbe : last;
     // One record by the branch; returns its side.
     const auto byBranch = [&](const PrimRecord* q) {
         const __m128 lo = _mm_loadu_ps(&q->lower.x), hi = _mm_loadu_ps(&q->upper.x);
-        const bool isLeft = (q->lower[axis] + q->upper[axis] - lower) * scale < leftBelow;
+        const bool isLeft = binIsBelow(q->lower[axis] + q->upper[axis], lower, scale, bin);
         if (isLeft) {
             _mm_storeu_ps(&left->lower.x, lo);
             _mm_storeu_ps(&left->upper.x, hi);
@@ -213,7 +211,7 @@ void partitionOnAxis(const PrimRecord* first, const PrimRecord* last, const Obje
         }
     } else {
         const __m128 lower4 = _mm_set1_ps(lower), scale4 = _mm_set1_ps(scale);
-        const __m128 leftBelow4 = _mm_set1_ps(leftBelow);
+        const __m128 leftBelow4 = _mm_set1_ps(static_cast<float>(bin)); // binIsBelow's
         const __m128 infinity = _mm_set1_ps(kInfinity), sign = _mm_set1_ps(-0.0f);
         for (; p != last; ++p) {
             const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
