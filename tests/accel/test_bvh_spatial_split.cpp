@@ -148,6 +148,79 @@ TEST(BvhSpatialSplit, BinsCutAReferenceAtEveryPlaneOfTheirAxis) {
     }
 }
 
+// binSpatial adds each reference to two ranges of bins and cuts the ranges' unions to the
+// slabs only at the end; its bins must equal those of references cut to each bin's slab and
+// added one by one, for references crossing any number of bins (1 to all 16), lying on planes
+// and on the node's bounds, along each axis. Values compare with ==: only zeros' signs may
+// differ between the two orders.
+TEST(BvhSpatialSplit, BinsMatchReferencesCutOneByOne) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_int_distribution<int> planeIndex(0, kSpatialBins);
+    const Aabb bounds{{-1.0f, 0.5f, 2.0f}, {3.0f, 1.75f, 2.3f}};
+    int crossings[kSpatialBins + 1] = {}; // references by how many bins they cross
+    for (int trial = 0; trial < 300; ++trial) {
+        const int axis = trial % 3;
+        const int count = 1 + trial % 41;
+        const float lower = bounds.lower[axis], extent = bounds.upper[axis] - lower;
+        RecordVector records;
+        for (int i = 0; i < count; ++i) {
+            // Each bound anywhere in the node, or on one of its planes (the node's bounds
+            // included).
+            glm::vec3 a, b;
+            for (int k = 0; k < 3; ++k) {
+                const float width = bounds.upper[k] - bounds.lower[k];
+                a[k] = bounds.lower[k] + width * unit(rng);
+                b[k] = bounds.lower[k] + width * unit(rng);
+            }
+            if (unit(rng) < 0.3f) {
+                a[axis] = spatialPlane(lower, extent, planeIndex(rng));
+            }
+            if (unit(rng) < 0.3f) {
+                b[axis] = spatialPlane(lower, extent, planeIndex(rng));
+            }
+            records.push_back({glm::min(a, b), static_cast<uint32_t>(i), glm::max(a, b), 0.0f});
+        }
+        SpatialBins got;
+        binSpatial(records.data(), records.data() + count, bounds, axis, got);
+
+        SpatialBins want;
+        const float scale = static_cast<float>(kSpatialBins) / extent;
+        for (const PrimRecord& r : records) {
+            const int first = binOf(r.lower[axis], lower, scale, kSpatialBins);
+            const int last = binOf(r.upper[axis], lower, scale, kSpatialBins);
+            ++crossings[last - first + 1];
+            ++want.entering[first];
+            ++want.leaving[last];
+            for (int bin = first; bin <= last; ++bin) {
+                Aabb part{r.lower, r.upper};
+                if (bin > 0) {
+                    part.lower[axis] = std::max(part.lower[axis], spatialPlane(lower, extent, bin));
+                }
+                if (bin < kSpatialBins - 1) {
+                    part.upper[axis] =
+                        std::min(part.upper[axis], spatialPlane(lower, extent, bin + 1));
+                }
+                want.box[bin].extend(_mm_setr_ps(part.lower.x, part.lower.y, part.lower.z, 0.0f),
+                                     _mm_setr_ps(part.upper.x, part.upper.y, part.upper.z, 0.0f));
+            }
+        }
+        for (int bin = 0; bin < kSpatialBins; ++bin) {
+            ASSERT_EQ(got.entering[bin], want.entering[bin]) << "trial " << trial;
+            ASSERT_EQ(got.leaving[bin], want.leaving[bin]) << "trial " << trial;
+            const Aabb g = got.box[bin].toAabb(), w = want.box[bin].toAabb();
+            ASSERT_EQ(g.empty(), w.empty()) << "trial " << trial << " bin " << bin;
+            if (!w.empty()) {
+                ASSERT_EQ(g.lower, w.lower) << "trial " << trial << " bin " << bin;
+                ASSERT_EQ(g.upper, w.upper) << "trial " << trial << " bin " << bin;
+            }
+        }
+    }
+    for (int n = 1; n <= kSpatialBins; ++n) {
+        EXPECT_GT(crossings[n], 10) << "references crossing " << n << " bins";
+    }
+}
+
 // Two clusters joined by a reference across the node: the best spatial split cuts between the
 // clusters, the long reference going to both sides.
 TEST(BvhSpatialSplit, BestSplitCutsBetweenClustersJoinedByALongReference) {

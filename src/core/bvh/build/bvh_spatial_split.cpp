@@ -4,16 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 namespace raylab {
 
 namespace {
 
-// The plane between bin i - 1 and bin i (0 < i < kSpatialBins) of [lower, lower + extent];
-// plane 0 is `lower` itself.
-float planeOf(float lower, float extent, int i) {
-    return lower + extent * (static_cast<float>(i) / static_cast<float>(kSpatialBins));
-}
+// Levels of the ranges of 2^k bins in binSpatial, k = 0 .. log2(kSpatialBins).
+constexpr int kSpatialRangeLevels = std::bit_width(static_cast<unsigned>(kSpatialBins));
 
 } // namespace
 
@@ -32,30 +30,44 @@ void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bou
         return; // a flat axis is never split
     }
     const float scale = static_cast<float>(kSpatialBins) / extent;
-    // plane[i]: the plane between bins i - 1 and i (plane[0]: the node's lower bound), in lane
-    // `axis` of a register.
-    __m128 plane[kSpatialBins];
-    for (int i = 0; i < kSpatialBins; ++i) {
-        plane[i] = _mm_set1_ps(planeOf(lower, extent, i));
-    }
-    const __m128 onAxis = axisLane(axis);
-    auto onPlane = [&](__m128 box, int i) { return withLane(onAxis, plane[i], box); };
+    // A reference covering bins [f, l] is added whole to two ranges of 2^k bins that together
+    // cover them exactly, k = floor(log2(l - f + 1)): ranges[k][f] and ranges[k][l + 1 - 2^k].
+    // A fixed amount of work a reference, however many bins it crosses, and no branch on it.
+    SseBox ranges[kSpatialRangeLevels][kSpatialBins];
+    int levelsUsed = 0;
     for (const PrimRecord* r = first; r != last; ++r) {
         const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
         const int firstBin = binOf(r->lower[axis], lower, scale, kSpatialBins);
         const int lastBin = binOf(r->upper[axis], lower, scale, kSpatialBins);
         ++bins.entering[firstBin];
         ++bins.leaving[lastBin];
-        if (firstBin == lastBin) {
-            bins.box[firstBin].extend(lo, hi);
-            continue;
+        const int level = std::bit_width(static_cast<unsigned>(lastBin - firstBin + 1)) - 1;
+        levelsUsed |= 1 << level;
+        ranges[level][firstBin].extend(lo, hi);
+        ranges[level][lastBin + 1 - (1 << level)].extend(lo, hi);
+    }
+    // Each range handed down to its two halves, so that ranges[0][i] is the union of the whole
+    // boxes of the references crossing bin i.
+    for (int level = std::bit_width(static_cast<unsigned>(levelsUsed)) - 1; level > 0; --level) {
+        const int half = 1 << (level - 1);
+        for (int p = 0; p + (1 << level) <= kSpatialBins; ++p) {
+            const SseBox& range = ranges[level][p];
+            ranges[level - 1][p].extend(range.lower, range.upper);
+            ranges[level - 1][p + half].extend(range.lower, range.upper);
         }
-        // The reference's box cut to each bin's slab.
-        bins.box[firstBin].extend(lo, onPlane(hi, firstBin + 1));
-        for (int i = firstBin + 1; i < lastBin; ++i) {
-            bins.box[i].extend(onPlane(lo, i), onPlane(hi, i + 1));
-        }
-        bins.box[lastBin].extend(onPlane(lo, lastBin), hi);
+    }
+    // That union cut to the bin's slab is the union of the references' parts in the slab
+    // (taking bounds to the slab commutes with min and max). The outer bins' slabs are open,
+    // so a reference that rounding places in them is not cut by the node's own bounds.
+    const __m128 onAxis = axisLane(axis);
+    for (int i = 0; i < kSpatialBins; ++i) {
+        const float below = i == 0 ? -kInfinity : spatialPlane(lower, extent, i);
+        const float above = i == kSpatialBins - 1 ? kInfinity : spatialPlane(lower, extent, i + 1);
+        const __m128 slabLower = withLane(onAxis, _mm_set1_ps(below), _mm_set1_ps(-kInfinity));
+        const __m128 slabUpper = withLane(onAxis, _mm_set1_ps(above), _mm_set1_ps(kInfinity));
+        const SseBox& crossing = ranges[0][i];
+        bins.box[i].extend(_mm_max_ps(crossing.lower, slabLower),
+                           _mm_min_ps(crossing.upper, slabUpper));
     }
 }
 
@@ -87,7 +99,7 @@ SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int a
         const float cost = acc.area() * static_cast<float>(n) + rightCost[s];
         if (cost < best.cost) {
             best.axis = axis;
-            best.position = planeOf(lower, extent, s);
+            best.position = spatialPlane(lower, extent, s);
             best.cost = cost;
             best.references = n + rightCount[s];
         }

@@ -19,6 +19,13 @@ namespace raylab {
 
 inline constexpr int kSpatialBins = 16;
 
+// The plane between spatial bin i - 1 and bin i (0 < i < kSpatialBins) of [lower, lower +
+// extent] on the binned axis; plane 0 is `lower` itself. Bin i's slab lies between planes i and
+// i + 1, but for the outer bins, which are open below (bin 0) and above (the last).
+inline float spatialPlane(float lower, float extent, int i) {
+    return lower + extent * (static_cast<float>(i) / static_cast<float>(kSpatialBins));
+}
+
 struct SpatialSplit {
     int axis = -1;           // -1: none found
     float position = 0.0f;   // the plane x[axis] = position
@@ -41,7 +48,9 @@ struct alignas(64) SpatialBins {
 };
 
 // Adds refs [first, last) (whose boxes lie in `bounds`, the node's) to `bins`, over
-// kSpatialBins planes across `axis`.
+// kSpatialBins planes across `axis`: a reference enters the bin of its lower bound and leaves
+// the bin of its upper (binOf), and each bin from the one to the other is extended by the
+// reference's box intersected with the bin's slab.
 void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bounds, int axis,
                 SpatialBins& bins);
 
