@@ -129,19 +129,29 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
 }
 
 float binOverreach(const BinSet& bins, const ObjectSplit& frame, const Aabb& bounds) {
+    // Lane a sums the extents along axis a of axis a's non-empty bins, bin by bin in increasing
+    // order; an empty bin adds zero, which leaves the sum unchanged.
+    const auto lane = [](int a) {
+        return _mm_castsi128_ps(_mm_setr_epi32(-(a == 0), -(a == 1), -(a == 2), 0));
+    };
+    __m128 sum = _mm_setzero_ps();
+    for (uint32_t used = bins.usedMask(frame.bins); used != 0; used &= used - 1) {
+        const int b = __builtin_ctz(used);
+        __m128 extents = _mm_setzero_ps();
+        for (int a = 0; a < 3; ++a) {
+            const __m128 extent = _mm_sub_ps(bins.box[a][b].upper, bins.box[a][b].lower);
+            extents = _mm_or_ps(extents, _mm_and_ps(lane(a), extent));
+        }
+        const __m128i empty = _mm_cmpeq_epi32(countsOf(bins, b), _mm_setzero_si128());
+        sum = _mm_add_ps(sum, _mm_andnot_ps(_mm_castsi128_ps(empty), extents));
+    }
+    alignas(16) float sums[4];
+    _mm_store_ps(sums, sum);
     float most = 0.0f;
     for (int a = 0; a < 3; ++a) {
-        if (!(frame.scale[a] > 0.0f)) {
-            continue;
+        if (frame.scale[a] > 0.0f) {
+            most = std::max(most, sums[a] / (bounds.upper[a] - bounds.lower[a]) - 1.0f);
         }
-        float sum = 0.0f;
-        for (int b = 0; b < frame.bins; ++b) {
-            if (bins.count[a][b] != 0) {
-                const Aabb box = bins.box[a][b].toAabb();
-                sum += box.upper[a] - box.lower[a];
-            }
-        }
-        most = std::max(most, sum / (bounds.upper[a] - bounds.lower[a]) - 1.0f);
     }
     return most;
 }
