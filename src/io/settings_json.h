@@ -40,9 +40,10 @@ std::string settingsToJson(const RenderSettings& settings, const std::string& sc
 // Which side of a split picture a settings file describes.
 struct SplitRecord {
     float divider = 0.5f; // the fraction of the width the left side showed
-    std::string side;     // "left" or "right"
-    std::string other;    // the file of the other side's settings (a name beside this one);
-                          // empty (not written) where it is not known, as in a PNG's chunk
+    // "left" or "right"; left where a file's record names no side
+    std::string side = "left";
+    std::string other; // the file of the other side's settings (a name beside this one);
+                       // empty (not written) where it is not known, as in a PNG's chunk
     // > 0: the picture was not a wipe but the signed difference left - right, shown with this
     // value (W/m^2) in full colour (the viewer's difference_view.h), written "difference": scale;
     // 0: a wipe (not written).

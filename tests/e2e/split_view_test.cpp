@@ -105,6 +105,15 @@ TEST(SplitView, SettingsFilesRecordTheirSide) {
     EXPECT_NE(error.find("split.divider"), std::string::npos) << error;
     EXPECT_FALSE(settingsFromJson(R"({"split": {"side": "middle"}})", read, extras, error));
     EXPECT_NE(error.find("split.side"), std::string::npos) << error;
+    // A record that names no side is the left side's, and is written back as one (a fuzzed file
+    // once read with an empty side, which its own written form then refused).
+    ASSERT_TRUE(settingsFromJson(R"({"split": {"divider": 0}})", read, extras, error)) << error;
+    ASSERT_TRUE(extras.split.has_value());
+    EXPECT_EQ(extras.split->side, "left");
+    file.split = extras.split;
+    SettingsJsonExtras again;
+    ASSERT_TRUE(settingsFromJson(settingsToJson(s, "", file), read, again, error)) << error;
+    EXPECT_EQ(again.split, extras.split);
 }
 
 TEST(SettingsFiles, CameraBookmarksRoundTripAndBadOnesAreRefused) {
