@@ -28,6 +28,18 @@ static_assert(sizeof(PrimRecord) == 32);
 // record it makes room for).
 using RecordVector = std::vector<PrimRecord, UninitialisedAllocator<PrimRecord>>;
 
+// All bits set in lane `axis` (0, 1 or 2) of a register, the other lanes clear.
+inline __m128 axisLane(int axis) {
+    alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
+        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}};
+    return _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks[axis]));
+}
+
+// `rest` with the lane that `lane` (an axisLane) selects taken from `value`.
+inline __m128 withLane(__m128 lane, __m128 value, __m128 rest) {
+    return _mm_or_ps(_mm_and_ps(lane, value), _mm_andnot_ps(lane, rest));
+}
+
 struct SseBox {
     __m128 lower = _mm_set1_ps(kInfinity);
     __m128 upper = _mm_set1_ps(-kInfinity);

@@ -6,18 +6,6 @@
 
 namespace raylab {
 
-// All bits set in lane `axis` (0, 1 or 2) of a register, the other lanes clear.
-inline __m128 axisLane(int axis) {
-    alignas(16) static constexpr uint32_t kLaneMasks[3][4] = {
-        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}};
-    return _mm_load_ps(reinterpret_cast<const float*>(kLaneMasks[axis]));
-}
-
-// `rest` with the lane that `lane` (an axisLane) selects taken from `value`.
-inline __m128 withLane(__m128 lane, __m128 value, __m128 rest) {
-    return _mm_or_ps(_mm_and_ps(lane, value), _mm_andnot_ps(lane, rest));
-}
-
 // True when the box is empty on x, y or z (lane 3 is ignored).
 inline bool isEmpty(const SseBox& b) {
     return (_mm_movemask_ps(_mm_cmpgt_ps(b.lower, b.upper)) & 7) != 0;

@@ -131,16 +131,13 @@ ObjectSplit bestObjectSplit(const BinSet& bins, uint32_t count, const ObjectSpli
 float binOverreach(const BinSet& bins, const ObjectSplit& frame, const Aabb& bounds) {
     // Lane a sums the extents along axis a of axis a's non-empty bins, bin by bin in increasing
     // order; an empty bin adds zero, which leaves the sum unchanged.
-    const auto lane = [](int a) {
-        return _mm_castsi128_ps(_mm_setr_epi32(-(a == 0), -(a == 1), -(a == 2), 0));
-    };
     __m128 sum = _mm_setzero_ps();
     for (uint32_t used = bins.usedMask(frame.bins); used != 0; used &= used - 1) {
         const int b = __builtin_ctz(used);
         __m128 extents = _mm_setzero_ps();
         for (int a = 0; a < 3; ++a) {
             const __m128 extent = _mm_sub_ps(bins.box[a][b].upper, bins.box[a][b].lower);
-            extents = _mm_or_ps(extents, _mm_and_ps(lane(a), extent));
+            extents = _mm_or_ps(extents, _mm_and_ps(axisLane(a), extent));
         }
         const __m128i empty = _mm_cmpeq_epi32(countsOf(bins, b), _mm_setzero_si128());
         sum = _mm_add_ps(sum, _mm_andnot_ps(_mm_castsi128_ps(empty), extents));
