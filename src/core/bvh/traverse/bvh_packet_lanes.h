@@ -134,7 +134,7 @@ RAYLAB_AVX2 inline void keepExact(PacketBest& best, const BvhTriangleBlock& bloc
     best.triangle = _mm256_load_si256(reinterpret_cast<const __m256i*>(bi));
 }
 
-// Slab test of child c's box against every lane (bvh_box_ray.h's hitBox per lane: the near
+// Slab test of child c's box against every lane (bvh_box_ray.h's test per lane: the near
 // plane is the smaller of the two distances). Returns the lanes whose (tMin, limit] overlaps the
 // box, and their entry distances.
 RAYLAB_AVX2 inline unsigned hitChild(const BvhWideNode& node, int c, const PacketRays& p,

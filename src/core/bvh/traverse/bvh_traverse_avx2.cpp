@@ -31,8 +31,9 @@ namespace {
 
 // The per-ray constants, broadcast to 8 lanes.
 struct WideRay {
-    // Box test: origin, 1/direction, offsets of the near and far bound in BvhWideNode's floats.
-    __m256 origin[3], inverse[3];
+    // Box test (BoxRay's): origin, 1/direction for the near bounds and scaled up for the far
+    // ones, offsets of the near and far bound in BvhWideNode's floats.
+    __m256 origin[3], inverse[3], farInverse[3];
     int nearOffset[3], farOffset[3];
     BlockRay triangles; // the triangle test (WatertightRay's constants)
 };
@@ -66,6 +67,7 @@ RAYLAB_AVX2 inline bool makeWideRay(const Ray& ray, WideRay& r) {
         const int nearIsUpper = inverse >= 0.0f ? 0 : 1;
         r.origin[i] = _mm256_set1_ps(ray.origin[i]);
         r.inverse[i] = _mm256_set1_ps(inverse);
+        r.farInverse[i] = _mm256_set1_ps(inverse * kBoxRoundUp);
         // lower[i] starts at float i * 8, upper[i] at 24 + i * 8.
         r.nearOffset[i] = nearIsUpper * 24 + i * kWideLanes;
         r.farOffset[i] = (1 - nearIsUpper) * 24 + i * kWideLanes;
@@ -90,14 +92,14 @@ RAYLAB_AVX2 inline int hitChildren(const BvhWideNode& node, const WideRay& r, fl
         t0[a] = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b + r.nearOffset[a]), r.origin[a]),
                               r.inverse[a]);
         t1[a] = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b + r.farOffset[a]), r.origin[a]),
-                              r.inverse[a]);
+                              r.farInverse[a]);
     }
     const __m256 tn =
         _mm256_max_ps(_mm256_max_ps(t0[0], t0[1]), _mm256_max_ps(t0[2], r.triangles.tMin));
-    const __m256 tf =
-        _mm256_min_ps(_mm256_min_ps(t1[0], t1[1]), _mm256_min_ps(t1[2], _mm256_set1_ps(limit)));
+    const __m256 tf = _mm256_min_ps(_mm256_min_ps(t1[0], t1[1]),
+                                    _mm256_min_ps(t1[2], _mm256_set1_ps(limit * kBoxRoundUp)));
     tNear = tn;
-    hit = _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ);
+    hit = _mm256_cmp_ps(tn, tf, _CMP_LE_OQ);
     return _mm256_movemask_ps(hit);
 }
 
