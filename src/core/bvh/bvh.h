@@ -86,9 +86,10 @@ struct BvhBuildOptions {
     bool keepBinaryNodes = false;
     // Extra references for pre-split triangles (bvh_presplit.h), as a fraction of the valid
     // triangles; 0 = none. Triangles of similar shape and size get none whatever the budget.
-    // Sponza: 0.3 traces as fast as 0.5 in 1.22 references a triangle against 1.31 (below 0.2
-    // its camera rays slow down; PERFORMANCE.md, "Build, memory, agreement").
-    float presplitBudget = 0.3f;
+    // None by default: with the spatial splits below, pre-splitting Sponza (the one scene of
+    // the bench that gets any) at 0.3 left its rays' work the same (counted) and cost 17% of
+    // its build and 5% of its memory (PERFORMANCE.md, "Build, memory, agreement").
+    float presplitBudget = 0.0f;
     // Spatial splits (bvh_spatial_split.h): at most this fraction of the references (after
     // pre-splitting) in extra references (0 = none). Tried only at nodes whose best object
     // split leaves child boxes overlapping by more than spatialSplitOverlap times the root's
