@@ -7,11 +7,20 @@
 #include <cstring>
 #include <gtest/gtest.h>
 #include <limits>
+#include <random>
 
 namespace raylab::accel_test {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// A scene of `count` copies of one triangle.
+Scene copiesOf(const Triangle& triangle, std::size_t count) {
+    Scene scene;
+    scene.materials.push_back({});
+    scene.triangles.assign(count, triangle);
+    return scene;
+}
 
 TEST(BvhRobustness, EmptySceneNeverHits) {
     const Scene empty;
@@ -26,10 +35,8 @@ TEST(BvhRobustness, EmptySceneNeverHits) {
 }
 
 TEST(BvhRobustness, OneTriangleRepeated100000TimesGivesTheLowestIndex) {
-    Scene scene;
-    scene.materials.push_back({});
-    const Triangle t{{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0};
-    scene.triangles.assign(100000, t);
+    const Scene scene = copiesOf(
+        Triangle{{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0}, 100000);
     const Bvh bvh = buildBvh(scene);
     EXPECT_LT(bvh.depth(), 64);
     const Ray ray{{0.1f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}};
@@ -40,6 +47,60 @@ TEST(BvhRobustness, OneTriangleRepeated100000TimesGivesTheLowestIndex) {
     EXPECT_TRUE(anyHit(bvh, ray));
     std::vector<Ray> rays = makeRandomRays(50, 2);
     expectMatchesBruteForce(scene, bvh, rays);
+}
+
+// Copies of one triangle in a plane of constant z lie in many leaves with flat boxes, whose
+// planes' distances are rounded otherwise than the triangle test's t. From 1,000 units away
+// those roundings outgrow the boxes' pad, and only the far distances' and the limit's round-up
+// (bvh_box_ray.h) keep every box a hit lies in: each copy ties with the first found (the lowest
+// index is the answer), a ray at a corner leaves a box where it enters it, and a ray whose range
+// holds the hit's t alone must still enter its box. Without either round-up, in the scalar or
+// the SIMD test, some of these rays miss.
+TEST(BvhRobustness, FlatBoxesKeepEveryHitSeenFromFarAway) {
+    const Triangle t{{-1.0f, -1.0f, 0.3f}, {1.0f, -1.0f, 0.3f}, {0.0f, 1.0f, 0.3f}, 0};
+    const Scene scene = copiesOf(t, 256);
+    const Bvh bvh = buildBvh(scene);
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 2000; ++i) {
+        // Half the rays mostly along x, so that the triangle test's axes are not the plane's.
+        const float across = i % 2 == 0 ? 0.0f : -3.0f;
+        const glm::vec3 origin(across + u(rng), u(rng), -1.0f + 0.7f * u(rng));
+        const glm::vec3 target(0.5f * u(rng), -0.5f + 0.4f * u(rng), 0.3f);
+        rays.push_back(Ray{origin, target - origin});
+    }
+    // From 1,000 units away, where the roundings of t outgrow the boxes' pad: there the plane's
+    // distance exceeds the next float after t for about 1 ray in 8,000.
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 origin(300.0f * u(rng), 300.0f * u(rng), -1000.0f);
+        const glm::vec3 target(0.5f * u(rng), -0.5f + 0.4f * u(rng), 0.3f);
+        rays.push_back(Ray{origin, target - origin});
+    }
+    // From as far, at the corners and edges, where the boxes' sides meet the plane: there a
+    // ray leaves a box as it enters it.
+    const glm::vec3 edges[] = {t.v0, t.v1, t.v2, 0.5f * (t.v0 + t.v1), 0.5f * (t.v1 + t.v2)};
+    for (int i = 0; i < 4000; ++i) {
+        const glm::vec3 origin(300.0f * u(rng), 300.0f * u(rng), -1000.0f);
+        rays.push_back(Ray{origin, edges[i % 5] - origin});
+    }
+    // The same rays with only the hit in range, (t-, t+): the box's plane against the limit.
+    const std::size_t unlimited = rays.size();
+    for (std::size_t i = 0; i < unlimited; ++i) {
+        const Hit hit = closestHitBruteForce(scene, rays[i]);
+        if (hit.found()) {
+            Ray ray = rays[i];
+            ray.tMin = std::nextafter(hit.t, 0.0f);
+            ray.tMax = std::nextafter(hit.t, kInfinity);
+            rays.push_back(ray);
+        }
+    }
+    EXPECT_GT(expectMatchesBruteForce(scene, bvh, rays), 45000);
+    std::vector<Hit> hits(rays.size());
+    closestHits(bvh, rays.data(), rays.size(), hits.data());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        ASSERT_TRUE(sameHit(hits[i], closestHitBruteForce(scene, rays[i]))) << "ray " << i;
+    }
 }
 
 TEST(BvhRobustness, NonFiniteAndDegenerateTrianglesAreSkipped) {
