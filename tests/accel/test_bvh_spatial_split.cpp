@@ -5,6 +5,7 @@
 #include "accel_check.h"
 #include "accel_scenes.h"
 #include "core/bvh/build/bvh_build_object_split.h"
+#include "core/bvh/build/bvh_build_subtree.h"
 #include "core/bvh/build/bvh_spatial_split.h"
 #include "core/bvh/bvh_packet.h"
 
@@ -151,8 +152,9 @@ TEST(BvhSpatialSplit, BinsCutAReferenceAtEveryPlaneOfTheirAxis) {
 // binSpatial adds each reference to two ranges of bins and cuts the ranges' unions to the
 // slabs only at the end; its bins must equal those of references cut to each bin's slab and
 // added one by one, for references crossing any number of bins (1 to all 16), lying on planes
-// and on the node's bounds, along each axis. Values compare with ==: only zeros' signs may
-// differ between the two orders.
+// and on the node's bounds, along each axis, every reference binned or every stride-th (a
+// large node's sample), an even or odd number of them. Values compare with ==: only zeros'
+// signs may differ between the two orders.
 TEST(BvhSpatialSplit, BinsMatchReferencesCutOneByOne) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -181,12 +183,14 @@ TEST(BvhSpatialSplit, BinsMatchReferencesCutOneByOne) {
             }
             records.push_back({glm::min(a, b), static_cast<uint32_t>(i), glm::max(a, b), 0.0f});
         }
+        const auto stride = static_cast<std::size_t>(1 + trial / 3 % 3);
         SpatialBins got;
-        binSpatial(records.data(), records.data() + count, bounds, axis, got);
+        binSpatial(records.data(), records.data() + count, bounds, axis, got, stride);
 
         SpatialBins want;
         const float scale = static_cast<float>(kSpatialBins) / extent;
-        for (const PrimRecord& r : records) {
+        for (std::size_t i = 0; i < records.size(); i += stride) {
+            const PrimRecord& r = records[i];
             const int first = binOf(r.lower[axis], lower, scale, kSpatialBins);
             const int last = binOf(r.upper[axis], lower, scale, kSpatialBins);
             ++crossings[last - first + 1];
@@ -240,6 +244,68 @@ TEST(BvhSpatialSplit, BestSplitCutsBetweenClustersJoinedByALongReference) {
     EXPECT_GT(split.position, 0.1f);
     EXPECT_LT(split.position, 0.9f);
     EXPECT_EQ(split.references, 22u);
+}
+
+// A large node's spatial split is chosen from every stride-th reference (bvh_build_subtree.cpp:
+// 4,096 to 8,191 of them): on the room's 30,080 references, a sample of 4,096 (and one of
+// 2,048) finds the plane that binning them all finds, along each axis, and estimates its cost
+// within 5%.
+TEST(BvhSpatialSplit, SampleFindsTheSplitOfAllReferences) {
+    const Scene room = makeRoom(30000, 50);
+    RecordVector records;
+    for (const Triangle& t : room.triangles) {
+        Aabb box;
+        box.extend(t.v0);
+        box.extend(t.v1);
+        box.extend(t.v2);
+        records.push_back({box.lower, static_cast<uint32_t>(records.size()), box.upper, 0.0f});
+    }
+    const PrimRecord* first = records.data();
+    const PrimRecord* last = first + records.size();
+    const Aabb bounds = boundsOf(first, last).box.toAabb();
+    for (int axis = 0; axis < 3; ++axis) {
+        SpatialBins all;
+        binSpatial(first, last, bounds, axis, all);
+        const SpatialSplit want = bestSpatialSplit(all, bounds, axis);
+        ASSERT_EQ(want.axis, axis);
+        for (const std::size_t samples : {4096, 2048}) {
+            const std::size_t stride = records.size() / samples;
+            SpatialBins some;
+            binSpatial(first, last, bounds, axis, some, stride);
+            const SpatialSplit got = bestSpatialSplit(some, bounds, axis);
+            const double toAll = static_cast<double>(records.size()) /
+                                 static_cast<double>((records.size() + stride - 1) / stride);
+            EXPECT_EQ(got.position, want.position) << "axis " << axis << ", stride " << stride;
+            EXPECT_NEAR(got.cost * toAll, want.cost, 0.05 * want.cost) << "axis " << axis;
+            EXPECT_NEAR(got.references * toAll, want.references, 0.05 * want.references);
+        }
+    }
+}
+
+// The references a spatial split made are kept when both sides hold some and the extra ones
+// fit the budget; a split chosen from a sample must also be cheaper, counted on them, than the
+// node's object split (the sample's boxes may miss references, so its cost is no bound).
+TEST(BvhSpatialSplit, KeptOnlyWithinTheBudgetAndCheaperThanTheObjectSplitIfSampled) {
+    RecordBounds unitBox, halfBox; // surface areas 6 and 3.5
+    unitBox.add(_mm_setr_ps(0.0f, 0.0f, 0.0f, 0.0f), _mm_setr_ps(1.0f, 1.0f, 1.0f, 0.0f));
+    halfBox.add(_mm_setr_ps(0.0f, 0.0f, 0.0f, 0.0f), _mm_setr_ps(0.5f, 1.0f, 1.0f, 0.0f));
+    SplitChoice choice;
+    choice.object.axis = 0;
+    choice.object.cost = 6.0f * 100.0f; // as if two unit boxes of 50 references
+    choice.spatial.axis = 0;
+    const uint32_t count = 100, budget = 10;
+    // Two half boxes of 55: cost 3.5 * 110 = 385, 10 extra references.
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, halfBox, 55, halfBox));
+    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget - 1, 55, halfBox, 55, halfBox));
+    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 0, RecordBounds{}, 100, unitBox));
+    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 100, unitBox, 0, RecordBounds{}));
+    // Two unit boxes of 55 cost 660, more than the object split: kept only if not sampled.
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, unitBox, 55, unitBox));
+    choice.spatial.sampled = true;
+    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 55, unitBox, 55, unitBox));
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, halfBox, 55, halfBox));
+    choice.object.axis = -1; // no object split to compare with
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, unitBox, 55, unitBox));
 }
 
 // binOverreach, the test for trying spatial splits at all: about 0 where references are small

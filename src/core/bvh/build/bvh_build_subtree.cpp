@@ -1,6 +1,7 @@
 #include "bvh/build/bvh_build_subtree.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace raylab {
 
@@ -13,6 +14,11 @@ constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one t
 // much (binOverreach): where they are small against the node, its overlap comes from the
 // shape of the surface, which cutting triangles does not remove (the dragon's large nodes).
 constexpr float kMinSpatialOverreach = 1.0f;
+// Nodes of more than kSpatialSampleFrom references bin a sample of at least kSpatialSample of
+// them for their spatial split (every count / kSpatialSample-th reference); the split is then
+// checked on the references it makes (keepsSpatialSplit). PERFORMANCE.md, "The BVH build".
+constexpr uint32_t kSpatialSampleFrom = 8192;
+constexpr uint32_t kSpatialSample = 4096;
 
 // Runs job(i) for i in [0, count): on the team when there is one.
 template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, const Job& job) {
@@ -84,14 +90,28 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     scratch.clearUsed(bins);
     float bestCost = choice.object.cost;
     if (trySpatial) {
+        const uint32_t stride = count > kSpatialSampleFrom ? count / kSpatialSample : 1;
         std::vector<SpatialBins> parts(chunks);
         forEachChunk(chunks, team, [&](std::size_t i) {
-            binSpatial(chunkBegin(i), chunkEnd(i), bounds, choice.object.axis, parts[i]);
+            // The chunk's samples: the references at multiples of stride in the node.
+            const auto begin = static_cast<std::size_t>(chunkBegin(i) - first);
+            const auto end = static_cast<std::size_t>(chunkEnd(i) - first);
+            const std::size_t firstSample = std::min(end, (begin + stride - 1) / stride * stride);
+            binSpatial(first + firstSample, first + end, bounds, choice.object.axis, parts[i],
+                       stride);
         });
         for (std::size_t i = 1; i < parts.size(); ++i) {
             parts[0].merge(parts[i]);
         }
         choice.spatial = bestSpatialSplit(parts[0], bounds, choice.object.axis);
+        if (stride > 1 && choice.spatial.axis >= 0) {
+            const uint32_t samples = (count + stride - 1) / stride;
+            const double toNode = static_cast<double>(count) / static_cast<double>(samples);
+            choice.spatial.cost = static_cast<float>(choice.spatial.cost * toNode);
+            choice.spatial.references = static_cast<uint32_t>(std::max(
+                static_cast<double>(count), std::round(choice.spatial.references * toNode)));
+            choice.spatial.sampled = true;
+        }
         if (choice.spatial.cost < bestCost && choice.spatial.references - count <= splitBudget) {
             bestCost = choice.spatial.cost;
         } else {
@@ -138,8 +158,8 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
             rights.clear();
             applySpatialSplit(*context_.scene, task.first, task.first + task.count, choice.spatial,
                               context_.slack, lefts, rights, left.bounds, right.bounds);
-            if (!lefts.empty() && !rights.empty() &&
-                lefts.size() + rights.size() - task.count <= task.splitBudget) {
+            if (keepsSpatialSplit(choice, task.count, task.splitBudget, lefts.size(), left.bounds,
+                                  rights.size(), right.bounds)) {
                 RecordVector& both = arrays.emplace_back();
                 both.reserve(lefts.size() + rights.size());
                 both.insert(both.end(), lefts.begin(), lefts.end());
@@ -185,6 +205,20 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         }
         splitIntoChildren(task, left, right, out, stack);
     }
+}
+
+bool keepsSpatialSplit(const SplitChoice& choice, uint32_t count, uint32_t splitBudget,
+                       std::size_t leftSize, const RecordBounds& leftBounds, std::size_t rightSize,
+                       const RecordBounds& rightBounds) {
+    if (leftSize == 0 || rightSize == 0 || leftSize + rightSize - count > splitBudget) {
+        return false;
+    }
+    if (!choice.spatial.sampled || choice.object.axis < 0) {
+        return true; // the bins' cost is an upper bound of the split's (bvh_spatial_split.h)
+    }
+    const float cost = leftBounds.box.toAabb().area() * static_cast<float>(leftSize) +
+                       rightBounds.box.toAabb().area() * static_cast<float>(rightSize);
+    return cost < choice.object.cost;
 }
 
 void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,

@@ -64,6 +64,14 @@ struct SplitChoice {
     SpatialSplit spatial;
 };
 
+// Whether a spatial split that made leftSize and rightSize references (with these bounds) of a
+// node's `count` is kept, as choose() meant it: both sides hold references, the extra ones fit
+// the node's budget, and a split chosen from a sample (SpatialSplit::sampled) is cheaper by the
+// SAH than the node's object split. Otherwise the node takes choice.fallback.
+bool keepsSpatialSplit(const SplitChoice& choice, uint32_t count, uint32_t splitBudget,
+                       std::size_t leftSize, const RecordBounds& leftBounds, std::size_t rightSize,
+                       const RecordBounds& rightBounds);
+
 class SubtreeBuilder {
 public:
     SubtreeBuilder(const BvhBuildOptions& options, const BuildContext& context);

@@ -56,8 +56,11 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             for (std::size_t i = 0; i < chunks; ++i) {
                 leftSize += lefts[i].size();
                 rightSize += rights[i].size();
+                left.bounds.merge(leftBounds[i]);
+                right.bounds.merge(rightBounds[i]);
             }
-            if (leftSize > 0 && rightSize > 0 && leftSize + rightSize - count <= task.splitBudget) {
+            if (keepsSpatialSplit(choice, count, task.splitBudget, leftSize, left.bounds, rightSize,
+                                  right.bounds)) {
                 // Both children in one new array, left first (each side in chunk order), with
                 // as much spare room; the chunks' parts are copied on the team.
                 RecordVector& both = arrays.emplace_back(leftSize + rightSize);
@@ -68,8 +71,6 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                     rightAt[i] = r;
                     l += lefts[i].size();
                     r += rights[i].size();
-                    left.bounds.merge(leftBounds[i]);
-                    right.bounds.merge(rightBounds[i]);
                 }
                 team.forEach(chunks, [&](std::size_t i) {
                     std::copy(lefts[i].begin(), lefts[i].end(),
@@ -87,6 +88,7 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 right.count = static_cast<uint32_t>(rightSize);
             } else {
                 kind = choice.fallback;
+                left.bounds = right.bounds = RecordBounds{};
             }
         }
         if (kind == SplitKind::Object) {

@@ -13,6 +13,61 @@ namespace {
 // Levels of the ranges of 2^k bins in binSpatial, k = 0 .. log2(kSpatialBins).
 constexpr int kSpatialRangeLevels = std::bit_width(static_cast<unsigned>(kSpatialBins));
 
+// binSpatial's pass over the references on one axis: counts each reference entering and leaving
+// and adds it to its ranges; returns bit k set where a reference went to ranges[k]. The bins of
+// two references come from one SSE register holding their bounds on the axis.
+template <int axis>
+int addToRanges(const PrimRecord* first, std::size_t count, std::size_t stride, float lower,
+                float scale, SseBox (&ranges)[kSpatialRangeLevels][kSpatialBins],
+                SpatialBins& bins) {
+    const __m128 lower4 = _mm_set1_ps(lower), scale4 = _mm_set1_ps(scale);
+    const __m128 top = _mm_set1_ps(static_cast<float>(kSpatialBins - 1));
+    // The reference's bounds on the axis in lanes 0 (lower) and 1 (upper) for axes 0 and 2, in
+    // lanes 2 and 3 for axis 1.
+    const auto ends = [](__m128 lo, __m128 hi) {
+        return axis == 2 ? _mm_unpackhi_ps(lo, hi) : _mm_unpacklo_ps(lo, hi);
+    };
+    // Those bounds' bins, as binOf clamps them.
+    const auto binsOf = [&](__m128 x) {
+        x = _mm_mul_ps(_mm_sub_ps(x, lower4), scale4);
+        return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), top));
+    };
+    int levelsUsed = 0;
+    const auto add = [&](__m128 lo, __m128 hi, int firstBin, int lastBin) {
+        ++bins.entering[firstBin];
+        ++bins.leaving[lastBin];
+        if (firstBin == lastBin) { // most references, in the nodes where spatial splits are tried
+            levelsUsed |= 1;
+            ranges[0][firstBin].extend(lo, hi);
+            return;
+        }
+        const int level = std::bit_width(static_cast<unsigned>(lastBin - firstBin + 1)) - 1;
+        levelsUsed |= 1 << level;
+        ranges[level][firstBin].extend(lo, hi);
+        ranges[level][lastBin + 1 - (1 << level)].extend(lo, hi);
+    };
+    alignas(16) int32_t bin[4];
+    const PrimRecord* r = first;
+    for (std::size_t k = 0; k + 2 <= count; k += 2, r += 2 * stride) { // two at once
+        const __m128 lo0 = _mm_loadu_ps(&r->lower.x), hi0 = _mm_loadu_ps(&r->upper.x);
+        const __m128 lo1 = _mm_loadu_ps(&r[stride].lower.x);
+        const __m128 hi1 = _mm_loadu_ps(&r[stride].upper.x);
+        const __m128 ends0 = ends(lo0, hi0), ends1 = ends(lo1, hi1);
+        const __m128 both = axis == 1 ? _mm_movehl_ps(ends1, ends0) : _mm_movelh_ps(ends0, ends1);
+        _mm_store_si128(reinterpret_cast<__m128i*>(bin), binsOf(both));
+        add(lo0, hi0, bin[0], bin[1]);
+        add(lo1, hi1, bin[2], bin[3]);
+    }
+    if (count % 2 != 0) {
+        const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
+        const __m128 e = ends(lo, hi);
+        _mm_store_si128(reinterpret_cast<__m128i*>(bin),
+                        binsOf(axis == 1 ? _mm_movehl_ps(e, e) : e));
+        add(lo, hi, bin[0], bin[1]);
+    }
+    return levelsUsed;
+}
+
 } // namespace
 
 void SpatialBins::merge(const SpatialBins& other) {
@@ -24,7 +79,7 @@ void SpatialBins::merge(const SpatialBins& other) {
 }
 
 void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bounds, int axis,
-                SpatialBins& bins) {
+                SpatialBins& bins, std::size_t stride) {
     const float lower = bounds.lower[axis], extent = bounds.upper[axis] - bounds.lower[axis];
     if (!(extent > 0.0f)) {
         return; // a flat axis is never split
@@ -32,19 +87,15 @@ void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bou
     const float scale = static_cast<float>(kSpatialBins) / extent;
     // A reference covering bins [f, l] is added whole to two ranges of 2^k bins that together
     // cover them exactly, k = floor(log2(l - f + 1)): ranges[k][f] and ranges[k][l + 1 - 2^k].
-    // A fixed amount of work a reference, however many bins it crosses, and no branch on it.
+    // A fixed amount of work a reference, however many bins it crosses.
     SseBox ranges[kSpatialRangeLevels][kSpatialBins];
     int levelsUsed = 0;
-    for (const PrimRecord* r = first; r != last; ++r) {
-        const __m128 lo = _mm_loadu_ps(&r->lower.x), hi = _mm_loadu_ps(&r->upper.x);
-        const int firstBin = binOf(r->lower[axis], lower, scale, kSpatialBins);
-        const int lastBin = binOf(r->upper[axis], lower, scale, kSpatialBins);
-        ++bins.entering[firstBin];
-        ++bins.leaving[lastBin];
-        const int level = std::bit_width(static_cast<unsigned>(lastBin - firstBin + 1)) - 1;
-        levelsUsed |= 1 << level;
-        ranges[level][firstBin].extend(lo, hi);
-        ranges[level][lastBin + 1 - (1 << level)].extend(lo, hi);
+    const std::size_t count =
+        first < last ? (static_cast<std::size_t>(last - first) + stride - 1) / stride : 0;
+    switch (axis) {
+    case 0: levelsUsed = addToRanges<0>(first, count, stride, lower, scale, ranges, bins); break;
+    case 1: levelsUsed = addToRanges<1>(first, count, stride, lower, scale, ranges, bins); break;
+    default: levelsUsed = addToRanges<2>(first, count, stride, lower, scale, ranges, bins); break;
     }
     // Each range handed down to its two halves, so that ranges[0][i] is the union of the whole
     // boxes of the references crossing bin i.
@@ -111,34 +162,52 @@ void applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRe
                        const SpatialSplit& split, float slack, RecordVector& left,
                        RecordVector& right, RecordBounds& leftBounds, RecordBounds& rightBounds) {
     const int a = split.axis;
-    for (const PrimRecord* r = first; r != last; ++r) {
-        if (r->upper[a] <= split.position) {
-            left.push_back(*r);
-            leftBounds.add(*r);
-        } else if (r->lower[a] >= split.position) {
-            right.push_back(*r);
-            rightBounds.add(*r);
+    // A reference goes to one side, or is cut into at most one part on each: room for all of
+    // them on both sides, written through pointers and cut back at the end, and the sides'
+    // bounds kept in registers, stored once.
+    const auto count = static_cast<std::size_t>(last - first);
+    const std::size_t leftStart = left.size(), rightStart = right.size();
+    left.resize(leftStart + count);
+    right.resize(rightStart + count);
+    PrimRecord* l = left.data() + leftStart;
+    PrimRecord* r = right.data() + rightStart;
+    RecordBounds lb = leftBounds, rb = rightBounds;
+    const auto put = [](PrimRecord*& to, RecordBounds& bounds, __m128 lo, __m128 hi) {
+        _mm_storeu_ps(&to->lower.x, lo);
+        _mm_storeu_ps(&to->upper.x, hi);
+        ++to;
+        bounds.add(lo, hi);
+    };
+    // Lane 3 of a record's lower corner holds its scene index: a part keeps the reference's.
+    const __m128 indexLane = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+    for (const PrimRecord* p = first; p != last; ++p) {
+        const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
+        if (p->upper[a] <= split.position) {
+            put(l, lb, lo, hi);
+        } else if (p->lower[a] >= split.position) {
+            put(r, rb, lo, hi);
         } else {
-            SseBox box, l, rr;
-            box.lower = _mm_loadu_ps(&r->lower.x);
-            box.upper = _mm_loadu_ps(&r->upper.x);
-            splitBoxSse(scene.triangles[r->sceneIndex], box, a, split.position, slack, l, rr);
-            if (!isEmpty(l)) {
-                const Aabb part = l.toAabb();
-                left.push_back({part.lower, r->sceneIndex, part.upper, 0.0f});
-                leftBounds.add(left.back());
+            SseBox box, leftPart, rightPart;
+            box.lower = lo;
+            box.upper = hi;
+            splitBoxSse(scene.triangles[p->sceneIndex], box, a, split.position, slack, leftPart,
+                        rightPart);
+            const bool leftEmpty = isEmpty(leftPart), rightEmpty = isEmpty(rightPart);
+            if (!leftEmpty) {
+                put(l, lb, withLane(indexLane, lo, leftPart.lower), leftPart.upper);
             }
-            if (!isEmpty(rr)) {
-                const Aabb part = rr.toAabb();
-                right.push_back({part.lower, r->sceneIndex, part.upper, 0.0f});
-                rightBounds.add(right.back());
+            if (!rightEmpty) {
+                put(r, rb, withLane(indexLane, lo, rightPart.lower), rightPart.upper);
             }
-            if (isEmpty(l) && isEmpty(rr)) { // only if rounding lost the part: keep it whole
-                left.push_back(*r);
-                leftBounds.add(*r);
+            if (leftEmpty && rightEmpty) { // only if rounding lost the part: keep it whole
+                put(l, lb, lo, hi);
             }
         }
     }
+    left.resize(static_cast<std::size_t>(l - left.data()));
+    right.resize(static_cast<std::size_t>(r - right.data()));
+    leftBounds = lb;
+    rightBounds = rb;
 }
 
 } // namespace raylab

@@ -31,6 +31,9 @@ struct SpatialSplit {
     float position = 0.0f;   // the plane x[axis] = position
     float cost = kInfinity;  // A(left) N(left) + A(right) N(right), as the object split's
     uint32_t references = 0; // N(left) + N(right) estimated by the bins
+    // Found from a sample of the node's references (cost and references scaled to the node's):
+    // the split made must then be checked against the object split (bvh_build_subtree.h).
+    bool sampled = false;
 };
 
 // The spatial bins of some references along one axis: per bin, how many references start and
@@ -47,12 +50,12 @@ struct alignas(64) SpatialBins {
     void merge(const SpatialBins& other);
 };
 
-// Adds refs [first, last) (whose boxes lie in `bounds`, the node's) to `bins`, over
-// kSpatialBins planes across `axis`: a reference enters the bin of its lower bound and leaves
-// the bin of its upper (binOf), and each bin from the one to the other is extended by the
-// reference's box intersected with the bin's slab.
+// Adds refs first[0], first[stride], first[2 stride] ... before `last` (whose boxes lie in
+// `bounds`, the node's) to `bins`, over kSpatialBins planes across `axis`: a reference enters
+// the bin of its lower bound and leaves the bin of its upper (binOf), and each bin from the one
+// to the other is extended by the reference's box intersected with the bin's slab.
 void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bounds, int axis,
-                SpatialBins& bins);
+                SpatialBins& bins, std::size_t stride = 1);
 
 // The best spatial split across `axis` of a node with these bins and bounds.
 SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int axis);
