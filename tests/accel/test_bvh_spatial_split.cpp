@@ -96,6 +96,15 @@ TEST(BvhSpatialSplit, MatchesBruteForceOnEveryPath) {
     }
 }
 
+// The room large enough that its top nodes choose their spatial splits from samples (more than
+// 8,192 references): still brute force's answers.
+TEST(BvhSpatialSplit, SampledSplitsMatchBruteForce) {
+    const Scene scene = makeRoom(9000, 51);
+    const Bvh bvh = buildBvh(scene, spatialOnly(0.3f));
+    EXPECT_GT(bvh.leafReferences, scene.triangles.size());
+    EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(1000, 52)), 200);
+}
+
 TEST(BvhSpatialSplit, WithPresplittingToo) {
     const Scene scene = makeRoom(2000, 46);
     BvhBuildOptions both;
