@@ -12,6 +12,7 @@
 #include "bvh/build/bvh_binning.h"
 #include "scene.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
