@@ -256,9 +256,9 @@ TEST(BvhSpatialSplit, BestSplitCutsBetweenClustersJoinedByALongReference) {
 }
 
 // A large node's spatial split is chosen from every stride-th reference (bvh_build_subtree.cpp:
-// 4,096 to 8,191 of them): on the room's 30,080 references, a sample of 4,096 (and one of
-// 2,048) finds the plane that binning them all finds, along each axis, and estimates its cost
-// within 5%.
+// 4,096 to 8,191 of them): on the room's 30,080 references, every 7th (4,298) and every 14th
+// (2,149) find the plane that binning them all finds, along each axis, and estimate its cost
+// and references within 5%.
 TEST(BvhSpatialSplit, SampleFindsTheSplitOfAllReferences) {
     const Scene room = makeRoom(30000, 50);
     RecordVector records;
@@ -295,7 +295,7 @@ TEST(BvhSpatialSplit, SampleFindsTheSplitOfAllReferences) {
 // fit the budget; a split chosen from a sample must also be cheaper, counted on them, than the
 // node's object split (the sample's boxes may miss references, so its cost is no bound).
 TEST(BvhSpatialSplit, KeptOnlyWithinTheBudgetAndCheaperThanTheObjectSplitIfSampled) {
-    RecordBounds unitBox, halfBox; // surface areas 6 and 3.5
+    RecordBounds unitBox, halfBox; // surface areas 6 and 4
     unitBox.add(_mm_setr_ps(0.0f, 0.0f, 0.0f, 0.0f), _mm_setr_ps(1.0f, 1.0f, 1.0f, 0.0f));
     halfBox.add(_mm_setr_ps(0.0f, 0.0f, 0.0f, 0.0f), _mm_setr_ps(0.5f, 1.0f, 1.0f, 0.0f));
     SplitChoice choice;
@@ -303,7 +303,7 @@ TEST(BvhSpatialSplit, KeptOnlyWithinTheBudgetAndCheaperThanTheObjectSplitIfSampl
     choice.object.cost = 6.0f * 100.0f; // as if two unit boxes of 50 references
     choice.spatial.axis = 0;
     const uint32_t count = 100, budget = 10;
-    // Two half boxes of 55: cost 3.5 * 110 = 385, 10 extra references.
+    // Two half boxes of 55: cost 4 * 110 = 440, 10 extra references.
     EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, halfBox, 55, halfBox));
     EXPECT_FALSE(keepsSpatialSplit(choice, count, budget - 1, 55, halfBox, 55, halfBox));
     EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 0, RecordBounds{}, 100, unitBox));
