@@ -143,7 +143,7 @@ Layout layOut(const Subtree& top, const std::vector<BuildTask>& deferred,
         if (subtreeAt[n] >= 0) {
             layout.recordAt[static_cast<std::size_t>(subtreeAt[n])] =
                 static_cast<uint32_t>(layout.records);
-            layout.records += subtrees[static_cast<std::size_t>(subtreeAt[n])].records.size();
+            layout.records += subtrees[static_cast<std::size_t>(subtreeAt[n])].leafTriangles.size();
         } else if (top.nodes[n].isLeaf()) {
             layout.topLeafAt[n] = static_cast<uint32_t>(layout.records);
             layout.records += top.nodes[n].count;
@@ -162,11 +162,11 @@ struct LeafOutput {
     uint32_t* sceneIndices = nullptr;
 };
 
-// Writes a leaf's references, from leaf triangle `at` on.
-void writeLeaves(const Scene& scene, const PrimRecord* first, std::size_t count, std::size_t at,
+// Writes the leaf references of triangles first[0 .. count), from leaf triangle `at` on.
+void writeLeaves(const Scene& scene, const uint32_t* first, std::size_t count, std::size_t at,
                  const LeafOutput& out) {
     for (std::size_t i = 0; i < count; ++i) {
-        const uint32_t index = first[i].sceneIndex;
+        const uint32_t index = first[i];
         if (out.triangles) {
             const Triangle& t = scene.triangles[index];
             out.triangles[at + i] = BvhTriangle{t.v0, t.v1, t.v2, index};
@@ -202,8 +202,8 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
     for (std::size_t n = 0; n < top.nodes.size(); ++n) {
         BvhNode node = top.nodes[n];
         if (node.isLeaf()) {
-            writeLeaves(scene, top.records.data() + node.index, node.count, layout.topLeafAt[n],
-                        out);
+            writeLeaves(scene, top.leafTriangles.data() + node.index, node.count,
+                        layout.topLeafAt[n], out);
             node.index = layout.topLeafAt[n];
         }
         bvh.nodes[n] = padded(node, pad); // a subtree's root overwrites its slot below
@@ -216,7 +216,7 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
             node.index += node.isLeaf() ? recordOffset : nodeOffset;
             bvh.nodes[k == 0 ? deferred[i].slot : nodeOffset + k] = padded(node, pad);
         }
-        writeLeaves(scene, sub.records.data(), sub.records.size(), recordOffset, out);
+        writeLeaves(scene, sub.leafTriangles.data(), sub.leafTriangles.size(), recordOffset, out);
     });
     bvh.leafReferences = layout.records;
 }
@@ -295,6 +295,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         Subtree subtree;
         subtree.nodes.reserve(local.count + 1);
         subtree.nodes.resize(1);
+        subtree.leafTriangles.reserve(local.count);
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);
     });

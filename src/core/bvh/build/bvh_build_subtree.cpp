@@ -198,9 +198,7 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
             left.bounds = boundsOf(left.first, left.first + left.count);
             right.bounds = boundsOf(right.first, right.first + right.count);
         } else if (kind == SplitKind::Leaf) {
-            out.nodes[task.slot].index = static_cast<uint32_t>(out.records.size());
-            out.nodes[task.slot].count = task.count;
-            out.records.insert(out.records.end(), task.first, task.first + task.count);
+            out.addLeaf(task.slot, task.first, task.count);
             continue;
         }
         splitIntoChildren(task, left, right, out, stack);
@@ -219,6 +217,14 @@ bool keepsSpatialSplit(const SplitChoice& choice, uint32_t count, uint32_t split
     const float cost = leftBounds.box.toAabb().area() * static_cast<float>(leftSize) +
                        rightBounds.box.toAabb().area() * static_cast<float>(rightSize);
     return cost < choice.object.cost;
+}
+
+void Subtree::addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count) {
+    nodes[slot].index = static_cast<uint32_t>(leafTriangles.size());
+    nodes[slot].count = count;
+    for (uint32_t i = 0; i < count; ++i) {
+        leafTriangles.push_back(first[i].sceneIndex);
+    }
 }
 
 void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,

@@ -42,10 +42,13 @@ struct BuildContext {
     uint32_t leafAtMost = 0;
 };
 
-// A built subtree: nodes[0] is its root; leaf node i holds records [index, index + count).
+// A built subtree: nodes[0] is its root; a leaf node holds the leaf references [index, index +
+// count) of leafTriangles, each the scene index of its triangle (all the BVH keeps of a record).
 struct Subtree {
     std::vector<BvhNode> nodes;
-    RecordVector records;
+    std::vector<uint32_t> leafTriangles;
+    // Makes out.nodes[slot] a leaf of the references [first, first + count).
+    void addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count);
 };
 
 // Makes task's node (out.nodes[task.slot]) an inner node over two new nodes for left and right,
@@ -91,7 +94,7 @@ public:
                   std::vector<BuildTask>& deferred, std::deque<RecordVector>& arrays) const;
 
     // A whole subtree on this thread, its references moving between their room and the spare
-    // room at each split. Leaves' references go to out.records in depth-first order, left
+    // room at each split. Leaves' references go to out.leafTriangles in depth-first order, left
     // child first.
     void buildSubtree(Subtree& out, const BuildTask& root) const;
 

@@ -133,9 +133,7 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             left.bounds = boundsOf(left.first, left.first + left.count);
             right.bounds = boundsOf(right.first, right.first + right.count);
         } else if (kind == SplitKind::Leaf) {
-            out.nodes[task.slot].index = static_cast<uint32_t>(out.records.size());
-            out.nodes[task.slot].count = count;
-            out.records.insert(out.records.end(), task.first, task.first + count);
+            out.addLeaf(task.slot, task.first, count);
             continue;
         }
         splitIntoChildren(task, left, right, out, stack);
