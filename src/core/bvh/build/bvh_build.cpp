@@ -162,7 +162,7 @@ struct LeafOutput {
     uint32_t* sceneIndices = nullptr;
 };
 
-// Writes the leaf references of triangles first[0 .. count), from leaf triangle `at` on.
+// Writes the leaf references of scene triangles first[0 .. count), from leaf triangle `at` on.
 void writeLeaves(const Scene& scene, const uint32_t* first, std::size_t count, std::size_t at,
                  const LeafOutput& out) {
     for (std::size_t i = 0; i < count; ++i) {
