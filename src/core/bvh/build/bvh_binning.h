@@ -138,6 +138,13 @@ inline int binOf(float c, float lower, float scale, int bins) {
     return static_cast<int>(x);
 }
 
+// binOf in the lanes of one register: lower, scale and top (bins - 1) broadcast or per lane.
+// The same operations, so the same bins.
+inline __m128i binOfLanes(__m128 c, __m128 lower, __m128 scale, __m128 top) {
+    const __m128 x = _mm_mul_ps(_mm_sub_ps(c, lower), scale);
+    return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), top));
+}
+
 // binOf(c, lower, scale, bins) < bin, for 0 < bin < bins, without the clamps: below 0 binOf
 // clamps to bin 0, above bins - 1 to bins - 1 >= bin, and between it truncates. The partition
 // (bvh_build_object_split.cpp) sorts records by it, in SSE lanes too.
@@ -178,8 +185,7 @@ inline void binRecords(const PrimRecord* first, const PrimRecord* last, const gl
     const __m128 scale4 = _mm_setr_ps(scale.x, scale.y, scale.z, 0.0f);
     const __m128 top = _mm_set1_ps(static_cast<float>(bins - 1));
     auto binOf4 = [&](__m128 lo, __m128 hi) {
-        const __m128 x = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(lo, hi), lo4), scale4);
-        return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), top));
+        return binOfLanes(_mm_add_ps(lo, hi), lo4, scale4, top);
     };
     alignas(16) int32_t b[4], c[4];
     const PrimRecord* r = first;

@@ -27,11 +27,8 @@ int addToRanges(const PrimRecord* first, std::size_t count, std::size_t stride, 
     const auto ends = [](__m128 lo, __m128 hi) {
         return axis == 2 ? _mm_unpackhi_ps(lo, hi) : _mm_unpacklo_ps(lo, hi);
     };
-    // Those bounds' bins, as binOf clamps them.
-    const auto binsOf = [&](__m128 x) {
-        x = _mm_mul_ps(_mm_sub_ps(x, lower4), scale4);
-        return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), top));
-    };
+    // Those bounds' bins.
+    const auto binsOf = [&](__m128 x) { return binOfLanes(x, lower4, scale4, top); };
     int levelsUsed = 0;
     const auto add = [&](__m128 lo, __m128 hi, int firstBin, int lastBin) {
         ++bins.entering[firstBin];
