@@ -46,66 +46,71 @@ EmbreeScene::EmbreeScene(const Scene& scene, const EmbreeOptions& options) {
             sceneIndex_.push_back(static_cast<uint32_t>(i));
         }
     }
-    const FlushDenormals flush;
-    buildSeconds_ = 1e30;
-    for (int b = 0; b < std::max(1, options.builds); ++b) {
-        const auto start = std::chrono::steady_clock::now();
-        if (!build(scene)) {
-            return;
-        }
-        buildSeconds_ = std::min(
-            buildSeconds_,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const std::int64_t before = deviceBytes_.load();
+    if (!makeGeometry(scene)) {
+        return;
     }
+    geometryBytes_ = grownBy(before, deviceBytes_.load());
 }
 
-bool EmbreeScene::build(const Scene& scene) {
+bool EmbreeScene::makeGeometry(const Scene& scene) {
+    if (sceneIndex_.empty()) {
+        return true;
+    }
+    geometry_ = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    const std::size_t count = sceneIndex_.size();
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        geometry_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
+    if (!vertices || !indices) {
+        error_ = "Embree: cannot allocate the geometry buffers";
+        return false;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const Triangle& t = scene.triangles[sceneIndex_[i]];
+        const glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
+        for (std::size_t k = 0; k < 3; ++k) {
+            for (std::size_t a = 0; a < 3; ++a) {
+                vertices[9 * i + 3 * k + a] = (*v[k])[static_cast<glm::length_t>(a)];
+            }
+            indices[3 * i + k] = static_cast<unsigned>(3 * i + k);
+        }
+    }
+    rtcCommitGeometry(geometry_);
+    return true;
+}
+
+bool EmbreeScene::build() {
+    const FlushDenormals flush;
+    const auto start = std::chrono::steady_clock::now();
     if (scene_) {
         rtcReleaseScene(scene_);
         scene_ = nullptr;
     }
     const std::int64_t before = deviceBytes_.load();
     scene_ = rtcNewScene(device_);
-    if (!sceneIndex_.empty()) {
-        RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        const std::size_t count = sceneIndex_.size();
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
-        if (!vertices || !indices) {
-            error_ = "Embree: cannot allocate the geometry buffers";
-            rtcReleaseGeometry(geometry);
-            return false;
-        }
-        for (std::size_t i = 0; i < count; ++i) {
-            const Triangle& t = scene.triangles[sceneIndex_[i]];
-            const glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
-            for (std::size_t k = 0; k < 3; ++k) {
-                for (std::size_t a = 0; a < 3; ++a) {
-                    vertices[9 * i + 3 * k + a] = (*v[k])[static_cast<glm::length_t>(a)];
-                }
-                indices[3 * i + k] = static_cast<unsigned>(3 * i + k);
-            }
-        }
-        rtcCommitGeometry(geometry);
-        rtcAttachGeometry(scene_, geometry);
-        rtcReleaseGeometry(geometry);
+    if (geometry_) {
+        rtcAttachGeometry(scene_, geometry_);
     }
-    const std::int64_t withGeometry = deviceBytes_.load();
     rtcCommitScene(scene_);
     if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) {
         error_ = "Embree: the scene build failed";
         return false;
     }
-    geometryBytes_ = grownBy(before, withGeometry);
-    memoryBytes_ = grownBy(withGeometry, deviceBytes_.load());
+    memoryBytes_ = grownBy(before, deviceBytes_.load());
+    buildSeconds_ =
+        std::min(buildSeconds_,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return true;
 }
 
 EmbreeScene::~EmbreeScene() {
     if (scene_) {
         rtcReleaseScene(scene_);
+    }
+    if (geometry_) {
+        rtcReleaseGeometry(geometry_);
     }
     if (device_) {
         rtcReleaseDevice(device_);

@@ -19,7 +19,6 @@ struct EmbreeOptions {
     std::string isa; // empty: Embree's own choice (its widest kernels); else one isEmbreeIsa
                      // (io/command_line.h, isEmbreeIsa) accepts
     int threads = 1; // Embree's build threads ("threads=" configuration), as raylab's build
-    int builds = 3;  // the build time is the best of this many builds (at least 1)
 };
 
 // Sets flush-to-zero and denormals-are-zero on the calling thread, as Embree's documentation asks
@@ -38,8 +37,8 @@ private:
 
 class EmbreeScene {
 public:
-    // Builds Embree's BVH (its default, medium quality) over the scene's valid triangles, as
-    // buildBvh skips the invalid ones. On failure, ok() is false and error() says why.
+    // Embree's device and its geometry over the scene's valid triangles, as buildBvh skips the
+    // invalid ones; build() makes the BVH. On failure, ok() is false and error() says why.
     EmbreeScene(const Scene& scene, const EmbreeOptions& options);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
@@ -51,7 +50,11 @@ public:
     // The scene's index of Embree primitive primID.
     uint32_t sceneIndex(unsigned primID) const { return sceneIndex_[primID]; }
 
-    // Seconds of the fastest build: geometry buffers filled, geometry and scene committed.
+    // Builds Embree's BVH (its default, medium quality) into handle(), releasing the previous
+    // one: a new scene over the geometry (whose buffers were filled and committed once, untimed),
+    // committed. Timed from the release; false, with error() set, on failure.
+    bool build();
+    // Seconds of the fastest build() so far.
     double buildSeconds() const { return buildSeconds_; }
     // Bytes the device gained in rtcCommitScene and kept: the BVH with its triangle data.
     std::size_t memoryBytes() const { return memoryBytes_; }
@@ -59,14 +62,15 @@ public:
     std::size_t geometryBytes() const { return geometryBytes_; }
 
 private:
-    bool build(const Scene& scene); // one build into scene_ (released first); false on failure
+    bool makeGeometry(const Scene& scene); // geometry_ over the valid triangles; false on failure
 
     RTCDevice device_ = nullptr;
+    RTCGeometry geometry_ = nullptr; // shared by every build's scene; null without triangles
     RTCScene scene_ = nullptr;
     std::vector<uint32_t> sceneIndex_;         // Embree primitive id -> scene triangle index
     std::atomic<std::int64_t> deviceBytes_{0}; // the memory monitor's running sum
     std::string error_;
-    double buildSeconds_ = 0.0;
+    double buildSeconds_ = 1e30;
     std::size_t memoryBytes_ = 0, geometryBytes_ = 0;
 };
 
