@@ -72,6 +72,7 @@ struct BenchReport {
     std::string embreeAbsent = "not built in"; // why there are no Embree figures
     std::string embreeIsa;                     // empty: Embree's own choice
     double embreeBuildSeconds = 0.0;
+    int builds = 0; // each build time is the best of this many builds (raylab's and Embree's)
     std::size_t embreeBytes = 0, embreeGeometryBytes = 0; // EmbreeScene
     std::array<EmbreeCallFigures, kEmbreeCalls> embree;   // every ray of the workload
     // The bounce workload's bounce rays alone: raylab's single rays and each Embree call.
