@@ -144,7 +144,7 @@ int run(int argc, char** argv) {
     report.frames = frames;
 
     // The BVHs: raylab's and Embree's builds in turns, each timed from the release of the
-    // previous one; each side's best (kMinBuilds).
+    // previous one; each side's time the best of its builds (kMinBuilds, above).
 #ifdef RAYLAB_HAVE_EMBREE
     std::unique_ptr<EmbreeScene> embree;
     if (flags.noEmbree) {
