@@ -56,7 +56,7 @@ public:
     bool build();
     // Seconds of the fastest build() so far.
     double buildSeconds() const { return buildSeconds_; }
-    // Bytes the device gained in rtcCommitScene and kept: the BVH with its triangle data.
+    // Bytes the device gained in the last build() and kept: the BVH with its triangle data.
     std::size_t memoryBytes() const { return memoryBytes_; }
     // Bytes of the vertex and index buffers Embree holds besides (3 vertices per triangle).
     std::size_t geometryBytes() const { return geometryBytes_; }

@@ -47,7 +47,7 @@ struct BuildContext {
 struct Subtree {
     std::vector<BvhNode> nodes;
     std::vector<uint32_t> leafTriangles;
-    // Makes out.nodes[slot] a leaf of the references [first, first + count).
+    // Makes nodes[slot] a leaf of the references [first, first + count).
     void addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count);
 };
 
