@@ -97,7 +97,7 @@ TEST(BvhSpatialSplit, MatchesBruteForceOnEveryPath) {
 }
 
 // The room large enough that its top nodes choose their spatial splits from samples (more than
-// 8,192 references): still brute force's answers.
+// 2,048 references): still brute force's answers.
 TEST(BvhSpatialSplit, SampledSplitsMatchBruteForce) {
     const Scene scene = makeRoom(9000, 51);
     const Bvh bvh = buildBvh(scene, spatialOnly(0.3f));
@@ -256,8 +256,8 @@ TEST(BvhSpatialSplit, BestSplitCutsBetweenClustersJoinedByALongReference) {
 }
 
 // A large node's spatial split is chosen from every stride-th reference (bvh_build_subtree.cpp:
-// 4,096 to 8,191 of them): on the room's 30,080 references, every 7th (4,298) and every 14th
-// (2,149) find the plane that binning them all finds, along each axis, and estimate its cost
+// 1,024 to 2,047 of them): on the room's 30,080 references, every 29th (1,038) and every 58th
+// (519) find the plane that binning them all finds, along each axis, and estimate its cost
 // and references within 5%.
 TEST(BvhSpatialSplit, SampleFindsTheSplitOfAllReferences) {
     const Scene room = makeRoom(30000, 50);
@@ -277,7 +277,7 @@ TEST(BvhSpatialSplit, SampleFindsTheSplitOfAllReferences) {
         binSpatial(first, last, bounds, axis, all);
         const SpatialSplit want = bestSpatialSplit(all, bounds, axis);
         ASSERT_EQ(want.axis, axis);
-        for (const std::size_t samples : {4096, 2048}) {
+        for (const std::size_t samples : {1024, 512}) {
             const std::size_t stride = records.size() / samples;
             SpatialBins some;
             binSpatial(first, last, bounds, axis, some, stride);

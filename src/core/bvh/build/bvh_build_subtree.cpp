@@ -17,8 +17,8 @@ constexpr float kMinSpatialOverreach = 1.0f;
 // Nodes of more than kSpatialSampleFrom references bin a sample of at least kSpatialSample of
 // them for their spatial split (every count / kSpatialSample-th reference); the split is then
 // checked on the references it makes (keepsSpatialSplit). PERFORMANCE.md, "The BVH build".
-constexpr uint32_t kSpatialSampleFrom = 8192;
-constexpr uint32_t kSpatialSample = 4096;
+constexpr uint32_t kSpatialSampleFrom = 2048;
+constexpr uint32_t kSpatialSample = 1024;
 
 // Runs job(i) for i in [0, count): on the team when there is one.
 template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, const Job& job) {
