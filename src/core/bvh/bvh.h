@@ -91,13 +91,13 @@ struct BvhBuildOptions {
     // its build and 5% of its memory (PERFORMANCE.md, "Build, memory, agreement").
     float presplitBudget = 0.0f;
     // Spatial splits (bvh_spatial_split.h): at most this fraction of the references (after
-    // pre-splitting) in extra references (0 = none). Tried only at nodes whose best object
-    // split leaves child boxes overlapping by more than spatialSplitOverlap times the root's
-    // surface area (Stich et al.'s alpha) and spatialSplitNodeOverlap times the node's own:
-    // the second test skips the many small nodes of finely tessellated meshes, where spatial
-    // splits cost build time and gain nothing (dragon). Not tried at all in a scene whose every
-    // triangle spans at most 1/16 of the scene's extent on every axis (an evenly tessellated
-    // scan: bvh_build.cpp).
+    // pre-splitting) in extra references (0 = none). Tried only at nodes of at least 64
+    // references whose best object split leaves child boxes overlapping by more than
+    // spatialSplitOverlap times the root's surface area (Stich et al.'s alpha) and
+    // spatialSplitNodeOverlap times the node's own: the second test skips the many small nodes of
+    // finely tessellated meshes, where spatial splits cost build time and gain nothing (dragon).
+    // Not tried at all in a scene whose every triangle spans at most 1/16 of the scene's extent on
+    // every axis (an evenly tessellated scan: bvh_build.cpp).
     float spatialSplitBudget = 0.3f;
     float spatialSplitOverlap = 1e-4f;
     float spatialSplitNodeOverlap = 0.2f;

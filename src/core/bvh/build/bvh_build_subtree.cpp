@@ -14,6 +14,10 @@ constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one t
 // much (binOverreach): where they are small against the node, its overlap comes from the
 // shape of the surface, which cutting triangles does not remove (the dragon's large nodes).
 constexpr float kMinSpatialOverreach = 1.0f;
+// Spatial splits are not tried at nodes of fewer references: there a try costs a large share of
+// the node's work and rarely wins (the thin triangles' build 12% fewer instructions, their rays'
+// work the same; PERFORMANCE.md, "The BVH build").
+constexpr uint32_t kMinSpatialCount = 64;
 // Nodes of more than kSpatialSampleFrom references bin a sample of at least kSpatialSample of
 // them for their spatial split (every count / kSpatialSample-th reference); the split is then
 // checked on the references it makes (keepsSpatialSplit). PERFORMANCE.md, "The BVH build".
@@ -83,7 +87,8 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     // object split's axis: the cut competes with that split where its children overlap.
     // Binning the other two axes as well took half of Sponza's build, and its trees traced
     // slower (PERFORMANCE.md, "The BVH build").
-    const bool trySpatial = splitBudget > 0 && context_.scene && choice.object.axis >= 0 &&
+    const bool trySpatial = count >= kMinSpatialCount && splitBudget > 0 && context_.scene &&
+                            choice.object.axis >= 0 &&
                             choice.object.overlapArea > context_.minOverlapArea &&
                             choice.object.overlapArea > context_.minNodeOverlap * bounds.area() &&
                             binOverreach(scratch, frame, bounds) >= kMinSpatialOverreach;
