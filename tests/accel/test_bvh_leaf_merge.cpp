@@ -165,7 +165,7 @@ TEST(BvhLeafMerge, SameWideTreeAsWhenTheBinaryNodesAreKept) {
     if (!bvhSimdSupported()) {
         GTEST_SKIP() << "no 8-wide form on this CPU";
     }
-    // With spatial splits and without: nodes of fewer than 64 references try none
+    // With spatial splits and without: nodes of fewer than kMinSpatialCount references try none
     // (bvh_build_subtree.cpp), so the nodes of at most kLeafMerge references that become leaves
     // unsplit would not have made spatial splits either.
     BvhBuildOptions noSpatial;
