@@ -9,6 +9,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
+#include <unistd.h>
 #include <vector>
 
 namespace raylab::accel_test {
@@ -100,22 +101,38 @@ TEST(BvhInterleaved, FewerRaysThanWalks) {
     }
 }
 
-// closestHits' rule: interleaved walks only where the 8-wide form takes more than
-// kInterleaveFromBytes.
-TEST(BvhInterleaved, InterleavesOnlyLargeBvhs) {
+// closestHits' rule: interleaved walks only where the 8-wide form takes more than the size given.
+TEST(BvhInterleaved, InterleavesOnlyBvhsLargerThanTheSizeGiven) {
+    constexpr std::size_t kFrom = std::size_t{4} << 20;
     Bvh bvh;
-    EXPECT_FALSE(interleavesRays(bvh)); // no 8-wide form
-    const std::size_t nodes = kInterleaveFromBytes / sizeof(BvhWideNode);
-    ASSERT_EQ(nodes * sizeof(BvhWideNode), kInterleaveFromBytes);
+    EXPECT_FALSE(interleavesRays(bvh, 0)); // no 8-wide form
+    const std::size_t nodes = kFrom / sizeof(BvhWideNode);
+    ASSERT_EQ(nodes * sizeof(BvhWideNode), kFrom);
     bvh.wideNodes.resize(nodes);
-    EXPECT_FALSE(interleavesRays(bvh)); // exactly the threshold
+    EXPECT_FALSE(interleavesRays(bvh, kFrom)); // exactly the size
+    EXPECT_TRUE(interleavesRays(bvh, kFrom - 1));
     bvh.triangleBlocks.resize(1);
-    EXPECT_TRUE(interleavesRays(bvh));
+    EXPECT_TRUE(interleavesRays(bvh, kFrom));
     bvh.wideNodes.resize(nodes / 2);
-    EXPECT_FALSE(interleavesRays(bvh));
-    bvh.triangleBlocks.resize(kInterleaveFromBytes / 2 / sizeof(BvhTriangleBlock) + 1);
-    EXPECT_TRUE(interleavesRays(bvh)); // nodes and blocks together
+    EXPECT_FALSE(interleavesRays(bvh, kFrom));
+    bvh.triangleBlocks.resize(kFrom / 2 / sizeof(BvhTriangleBlock) + 1);
+    EXPECT_TRUE(interleavesRays(bvh, kFrom)); // nodes and blocks together
+    EXPECT_FALSE(interleavesRays(bvh, kFrom + sizeof(BvhTriangleBlock)));
+    // The size closestHits uses: the level 3 cache's as the system reports it, or
+    // kInterleaveWithoutCacheSize where it reports none.
+    EXPECT_EQ(interleavesRays(bvh), interleavesRays(bvh, interleaveFromBytes()));
     EXPECT_FALSE(interleavesRays(buildBvh(makeCornellBox())));
+}
+
+TEST(BvhInterleaved, InterleavesFromTheCacheSizeReported) {
+    EXPECT_EQ(interleaveFromBytes(300L << 20), std::size_t{300} << 20);
+    EXPECT_EQ(interleaveFromBytes(32L << 20), std::size_t{32} << 20);
+    EXPECT_EQ(interleaveFromBytes(0), kInterleaveWithoutCacheSize);  // glibc: unknown
+    EXPECT_EQ(interleaveFromBytes(-1), kInterleaveWithoutCacheSize); // not supported
+#if defined(_SC_LEVEL3_CACHE_SIZE)
+    // closestHits' size is the one for the level 3 cache glibc reports.
+    EXPECT_EQ(interleaveFromBytes(), interleaveFromBytes(sysconf(_SC_LEVEL3_CACHE_SIZE)));
+#endif
 }
 
 // Without the 8-wide form closestHits is closestHit (the scalar walk) ray by ray.

@@ -120,14 +120,24 @@ bool anyHit(const Bvh& bvh, const Ray& ray);
 // overlaps the others' work; else one after the other.
 void closestHits(const Bvh& bvh, const Ray* rays, std::size_t count, Hit* hits);
 
-// closestHits' rule: the 8-wide form's nodes and triangle blocks take more than
-// kInterleaveFromBytes, so that most of a walk's reads miss the caches. Measured on raylab-bench's
-// bounce rays alone, 1 thread, interleaved over one by one: the dragon (45 MiB) 1.14-1.25x, the
-// dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70% (32 MiB) 1.01-1.05x, to half
-// (22 MiB) 0.96-0.99x; with a first version of the walks, its 10 MiB version 0.96-0.98x, Sponza
-// (16 MiB) 0.75-0.83x, the bunny (4 MiB) 0.90-0.94x (PERFORMANCE.md, "Interleaved walks").
-inline constexpr std::size_t kInterleaveFromBytes = std::size_t{32} << 20;
+// closestHits' rule: the 8-wide form's nodes and triangle blocks take more than `fromBytes`, by
+// default interleaveFromBytes() (below), so that most of a walk's reads miss the caches.
+bool interleavesRays(const Bvh& bvh, std::size_t fromBytes);
 bool interleavesRays(const Bvh& bvh);
+
+// The size from which closestHits interleaves: the CPU's level 3 cache, as the system reports it
+// (lastLevelCacheBytes; interleaveFromBytes() asks glibc once), or kInterleaveWithoutCacheSize
+// where it reports none. Measured on
+// raylab-bench's bounce rays, interleaved over one by one (PERFORMANCE.md, "Interleaved walks"):
+// on the Zen 4 (a 32 MiB cache), the bounce rays alone, 1 thread: the dragon (45 MiB) 1.14-1.25x,
+// the dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70% (32 MiB) 1.01-1.05x, to half
+// (22 MiB) 0.96-0.99x, Sponza (16 MiB) 0.75-0.83x, the bunny (4 MiB) 0.90-0.94x. On the Intel Xeon
+// (300 MiB), where the dragon and the 980,000-triangle terrain (55 MiB) fit, the whole bounce
+// workload over Embree's was as high or higher one by one: on 2 threads the dragon's 1.18-1.35
+// against 1.11-1.20.
+std::size_t interleaveFromBytes(long lastLevelCacheBytes);
+std::size_t interleaveFromBytes();
+inline constexpr std::size_t kInterleaveWithoutCacheSize = std::size_t{32} << 20;
 
 // What one query cost: the BVH nodes it visited and the triangles it tested (8 a block on the
 // 8-wide form, whose SIMD test takes a block at once). The answers are closestHit's and anyHit's.

@@ -6,6 +6,8 @@
 #include "bvh/traverse/bvh_wide_traverse.h"
 #include "triangle_intersection.h"
 
+#include <unistd.h>
+
 namespace raylab {
 
 namespace {
@@ -254,11 +256,30 @@ bool anyHit(const Bvh& bvh, const Ray& ray) {
     return anyHitWide(bvh, ray);
 }
 
-bool interleavesRays(const Bvh& bvh) {
+std::size_t interleaveFromBytes(long lastLevelCacheBytes) {
+    return lastLevelCacheBytes > 0 ? static_cast<std::size_t>(lastLevelCacheBytes)
+                                   : kInterleaveWithoutCacheSize;
+}
+
+std::size_t interleaveFromBytes() {
+    // The level 3 cache's size as glibc reports it (0 or -1 where it knows none), asked once.
+    static const std::size_t fromBytes = [] {
+        long bytes = 0;
+#if defined(_SC_LEVEL3_CACHE_SIZE)
+        bytes = sysconf(_SC_LEVEL3_CACHE_SIZE);
+#endif
+        return interleaveFromBytes(bytes);
+    }();
+    return fromBytes;
+}
+
+bool interleavesRays(const Bvh& bvh, std::size_t fromBytes) {
     const std::size_t bytes = bvh.wideNodes.size() * sizeof(BvhWideNode) +
                               bvh.triangleBlocks.size() * sizeof(BvhTriangleBlock);
-    return !bvh.wideNodes.empty() && bytes > kInterleaveFromBytes;
+    return !bvh.wideNodes.empty() && bytes > fromBytes;
 }
+
+bool interleavesRays(const Bvh& bvh) { return interleavesRays(bvh, interleaveFromBytes()); }
 
 void closestHits(const Bvh& bvh, const Ray* rays, std::size_t count, Hit* hits) {
     if (interleavesRays(bvh)) {
