@@ -125,16 +125,15 @@ void closestHits(const Bvh& bvh, const Ray* rays, std::size_t count, Hit* hits);
 bool interleavesRays(const Bvh& bvh, std::size_t fromBytes);
 bool interleavesRays(const Bvh& bvh);
 
-// The size from which closestHits interleaves: the CPU's level 3 cache, as the system reports it
-// (lastLevelCacheBytes; interleaveFromBytes() asks glibc once), or kInterleaveWithoutCacheSize
-// where it reports none. Measured on
-// raylab-bench's bounce rays, interleaved over one by one (PERFORMANCE.md, "Interleaved walks"):
-// on the Zen 4 (a 32 MiB cache), the bounce rays alone, 1 thread: the dragon (45 MiB) 1.14-1.25x,
-// the dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70% (32 MiB) 1.01-1.05x, to half
-// (22 MiB) 0.96-0.99x, Sponza (16 MiB) 0.75-0.83x, the bunny (4 MiB) 0.90-0.94x. On the Intel Xeon
-// (300 MiB), where the dragon and the 980,000-triangle terrain (55 MiB) fit, the whole bounce
-// workload over Embree's was as high or higher one by one: on 2 threads the dragon's 1.18-1.35
-// against 1.11-1.20.
+// The size from which closestHits interleaves: the CPU's level 3 cache as the system reports it
+// (interleaveFromBytes() asks glibc once), or kInterleaveWithoutCacheSize where it reports none.
+// Measured on raylab-bench's bounce rays, interleaved over one by one (PERFORMANCE.md,
+// "Interleaved walks"): on the Zen 4 (a 32 MiB cache), the bounce rays alone, 1 thread: the
+// dragon (45 MiB) 1.14-1.25x, the dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70%
+// (32 MiB) 1.01-1.05x, to half (22 MiB) 0.96-0.99x, Sponza (16 MiB) 0.75-0.83x, the bunny (4 MiB)
+// 0.90-0.94x. On the Intel Xeon (300 MiB), where the dragon and the 980,000-triangle terrain
+// (55 MiB) fit, the whole bounce workload over Embree's was as high or higher one by one: on 2
+// threads the dragon's 1.18-1.35 against 1.11-1.20.
 std::size_t interleaveFromBytes(long lastLevelCacheBytes);
 std::size_t interleaveFromBytes();
 inline constexpr std::size_t kInterleaveWithoutCacheSize = std::size_t{32} << 20;
