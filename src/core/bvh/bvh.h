@@ -132,7 +132,7 @@ bool interleavesRays(const Bvh& bvh);
 // dragon (45 MiB) 1.14-1.25x, the dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70%
 // (32 MiB) 1.01-1.05x, to half (22 MiB) 0.96-0.99x, Sponza (16 MiB) 0.75-0.83x, the bunny (4 MiB)
 // 0.90-0.94x. On the Intel Xeon (300 MiB), where the dragon and the 980,000-triangle terrain
-// (55 MiB) fit, the whole bounce workload over Embree's was as high or higher one by one: on 2
+// (52 MiB) fit, the whole bounce workload over Embree's was as high or higher one by one: on 2
 // threads the dragon's 1.18-1.35 against 1.11-1.20.
 std::size_t interleaveFromBytes(long lastLevelCacheBytes);
 std::size_t interleaveFromBytes();
