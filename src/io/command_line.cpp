@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -80,11 +81,18 @@ Handler benchSwitch(bool BenchOptions::*field) {
     };
 }
 
-Handler benchFraction(float BenchOptions::*field) {
+// A fraction >= 0, and at most `most` when that is finite.
+Handler benchFraction(float BenchOptions::*field,
+                      float most = std::numeric_limits<float>::infinity()) {
     return [=](const std::string& value, ParseState& s) -> std::string {
         float v = 0.0f;
-        if (!parseFloat(value, v) || !(v >= 0.0f)) {
-            return "expected a fraction >= 0, got " + quoted(value);
+        if (!parseFloat(value, v) || !(v >= 0.0f) || v > most) {
+            if (!std::isfinite(most)) {
+                return "expected a fraction >= 0, got " + quoted(value);
+            }
+            char top[32];
+            std::snprintf(top, sizeof top, "%g", most);
+            return std::string("expected a fraction in [0, ") + top + "], got " + quoted(value);
         }
         s.out.bench.*field = v;
         return {};
@@ -580,8 +588,8 @@ const std::vector<Option>& options() {
          benchSwitch(&BenchOptions::noBlocks)},
         {"--no-passes", nullptr, kBench, "no renderer passes (lab and path integrators' samples/s)",
          benchSwitch(&BenchOptions::noPasses)},
-        {"--spatial-budget", "F", kBench, "BVH spatial splits: extra references, fraction >= 0",
-         benchFraction(&BenchOptions::spatialBudget)},
+        {"--spatial-budget", "F", kBench, "BVH spatial splits: extra references, fraction 0 to 1",
+         benchFraction(&BenchOptions::spatialBudget, 1.0f)},
         {"--presplit-budget", "F", kBench, "BVH pre-splitting: extra references, fraction >= 0",
          benchFraction(&BenchOptions::presplitBudget)},
         {"--embree-isa", "NAME", kBench,

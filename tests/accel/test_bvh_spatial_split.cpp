@@ -77,7 +77,7 @@ TEST(BvhSpatialSplit, NoneWhereEveryTriangleIsNarrowerThanASpatialBin) {
 
 TEST(BvhSpatialSplit, MatchesBruteForceOnEveryPath) {
     const Scene scene = makeRoom(3000, 42);
-    for (const float budget : {0.3f, 4.0f}) {
+    for (const float budget : {0.3f, 1.0f}) {
         const Bvh bvh = buildBvh(scene, spatialOnly(budget));
         EXPECT_GT(expectMatchesBruteForce(scene, bvh, makeRandomRays(6000, 43)), 1000);
         expectMatchesBruteForce(scene, bvh, makeAxisAlignedRays(4000, 1.1f, 44));
@@ -394,6 +394,73 @@ TEST(BvhSpatialSplit, OverreachIsTheLargestSumOfBinExtentsOverTheNode) {
     }
     EXPECT_GT(positive, 100);
     EXPECT_GT(flatAxes, 40);
+}
+
+// The references' two ranges hold room for every reference the splits may add, allocated
+// once: a budget above 1 would need more, and is taken as 1.
+TEST(BvhSpatialSplit, BudgetAboveOneIsTakenAsOne) {
+    const Scene scene = makeRoom(3000, 53);
+    const Bvh one = buildBvh(scene, spatialOnly(1.0f)), four = buildBvh(scene, spatialOnly(4.0f));
+    EXPECT_GT(one.leafReferences, scene.triangles.size());
+    EXPECT_LE(one.leafReferences, 2 * scene.triangles.size());
+    EXPECT_EQ(four.leafReferences, one.leafReferences);
+    ASSERT_EQ(four.wideNodes.size(), one.wideNodes.size());
+    EXPECT_EQ(std::memcmp(four.wideNodes.data(), one.wideNodes.data(),
+                          one.wideNodes.size() * sizeof(BvhWideNode)),
+              0);
+}
+
+// A split's children take their parts of the parent's two ranges: each child's references
+// and spare room are followed by room for its share of the budget, and the two rooms fill the
+// parent's exactly, without overlapping.
+TEST(BvhSpatialSplit, ChildrenShareTheParentsRoom) {
+    BuildTask parent;
+    parent.count = 100;
+    parent.splitBudget = 30;
+    BuildTask left, right;
+    left.count = 55; // a spatial split that made 10 extra references
+    right.count = 55;
+    shareSplitBudget(parent, left, right);
+    EXPECT_EQ(left.splitBudget + right.splitBudget, 20u);
+    EXPECT_EQ(left.splitBudget, 10u); // by size
+    EXPECT_EQ(left.room() + right.room(), parent.room());
+    RecordVector to(parent.room()), from(parent.room());
+    placeChildren(to.data(), from.data(), left, right);
+    EXPECT_EQ(left.first, to.data());
+    EXPECT_EQ(left.spare, from.data());
+    EXPECT_EQ(right.first, to.data() + left.room());
+    EXPECT_EQ(right.spare, from.data() + left.room());
+
+    left.count = 80; // an object split: the whole budget left, shared by size
+    right.count = 20;
+    shareSplitBudget(parent, left, right);
+    EXPECT_EQ(left.splitBudget, 24u);
+    EXPECT_EQ(right.splitBudget, 6u);
+    left.count = 70; // over budget (kept only by a caller that checked): no room to share
+    right.count = 70;
+    shareSplitBudget(parent, left, right);
+    EXPECT_EQ(left.splitBudget + right.splitBudget, 0u);
+}
+
+// Nodes whose centroids all coincide split at the median, in place; with a budget their right
+// half moves on to leave the left half its room. Thousands of copies of one wide triangle
+// among the room's: median splits at the top (on the team) and in the subtrees, spatial splits
+// around them, and still brute force's answers and one tree for any thread count.
+TEST(BvhSpatialSplit, MedianSplitsKeepTheirChildrensRoom) {
+    Scene scene = makeRoom(3000, 54);
+    const Triangle wide{{-1.0f, -0.2f, -1.0f}, {1.0f, 0.1f, -1.0f}, {0.0f, 0.3f, 1.0f}, 0};
+    scene.triangles.insert(scene.triangles.end(), 6000, wide);
+    BvhBuildOptions one = spatialOnly(0.3f), two = spatialOnly(0.3f);
+    one.threads = 1;
+    two.threads = 2;
+    const Bvh a = buildBvh(scene, one), b = buildBvh(scene, two);
+    EXPECT_GT(a.leafReferences, scene.triangles.size());
+    EXPECT_LE(a.leafReferences, scene.triangles.size() + scene.triangles.size() * 3 / 10);
+    EXPECT_GT(expectMatchesBruteForce(scene, a, makeRandomRays(3000, 55)), 500);
+    ASSERT_EQ(a.triangleBlocks.size(), b.triangleBlocks.size());
+    EXPECT_EQ(std::memcmp(a.triangleBlocks.data(), b.triangleBlocks.data(),
+                          a.triangleBlocks.size() * sizeof(BvhTriangleBlock)),
+              0);
 }
 
 TEST(BvhSpatialSplit, SameTreeForAnyThreadCount) {

@@ -91,7 +91,8 @@ struct BvhBuildOptions {
     // its build and 5% of its memory (PERFORMANCE.md, "Build, memory, agreement").
     float presplitBudget = 0.0f;
     // Spatial splits (bvh_spatial_split.h): at most this fraction of the references (after
-    // pre-splitting) in extra references (0 = none). Tried only at nodes of at least 64
+    // pre-splitting) in extra references (0 = none; above 1 taken as 1: the build keeps room for
+    // them all from the start). Tried only at nodes of at least 64
     // references whose best object split leaves child boxes overlapping by more than
     // spatialSplitOverlap times the root's surface area (Stich et al.'s alpha) and
     // spatialSplitNodeOverlap times the node's own: the second test skips the many small nodes of

@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <glm/common.hpp>
 #include <numeric>
 #include <vector>
@@ -35,12 +34,16 @@ constexpr std::size_t kRecordChunk = 16384; // triangles per chunk of makeRecord
 // One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
 // box of the valid triangles and the widest of them on each axis (upper - lower, world units).
 // Chunk c writes its records from c * kRecordChunk on, in the array itself; only where
-// triangles were skipped do later chunks move down after.
-RecordVector makeRecords(const Scene& scene, BuildTeam& team, std::size_t& skipped, Aabb& box,
-                         glm::vec3& widest) {
+// triangles were skipped do later chunks move down after. The array has capacity for
+// `extraRoom` times as many records more.
+RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, std::size_t& skipped,
+                         Aabb& box, glm::vec3& widest) {
     const std::size_t triangles = scene.triangles.size();
     const std::size_t chunks = (triangles + kRecordChunk - 1) / kRecordChunk;
-    RecordVector records(triangles);
+    RecordVector records;
+    records.reserve(triangles +
+                    static_cast<std::size_t>(extraRoom * static_cast<double>(triangles)));
+    records.resize(triangles);
     struct ChunkFacts { // one chunk's, accumulated in registers and stored once
         std::size_t made = 0;
         Aabb box;
@@ -230,7 +233,11 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
                                                              : resolveThreadCount(options.threads));
     Aabb sceneBox;                  // of the valid triangles
     glm::vec3 widestTriangle{0.0f}; // on each axis, before pre-splitting
-    RecordVector records = makeRecords(scene, team, bvh.skippedTriangles, sceneBox, widestTriangle);
+    // Spatial splits add at most this fraction of references (BvhBuildOptions; NaN: none).
+    const float spatialBudget =
+        options.spatialSplitBudget > 0.0f ? std::min(options.spatialSplitBudget, 1.0f) : 0.0f;
+    RecordVector records =
+        makeRecords(scene, spatialBudget, team, bvh.skippedTriangles, sceneBox, widestTriangle);
     if (records.empty()) {
         return bvh;
     }
@@ -256,7 +263,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     if (wide && !options.keepBinaryNodes) {
         context.leafAtMost = kLeafMerge; // the binary nodes are dropped after the collapse
     }
-    if (options.spatialSplitBudget > 0.0f && splitsMayPay) {
+    if (spatialBudget > 0.0f && splitsMayPay) {
         context.scene = &scene;
         context.slack = slack;
         context.minOverlapArea = options.spatialSplitOverlap * root.bounds.box.toAabb().area();
@@ -265,10 +272,12 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     const SubtreeBuilder builder(options, context);
     const std::size_t total = records.size();
     root.count = static_cast<uint32_t>(total);
-    root.splitBudget = static_cast<uint32_t>(
-        std::min(1e9, static_cast<double>(std::max(0.0f, options.spatialSplitBudget)) *
-                          static_cast<double>(total)));
-    RecordVector spare(total);
+    // The references' two ranges with room for every reference the splits may add
+    // (BuildTask), allocated once.
+    root.splitBudget =
+        context.scene ? static_cast<uint32_t>(spatialBudget * static_cast<double>(total)) : 0;
+    records.resize(root.room());
+    RecordVector spare(root.room());
     root.first = records.data();
     root.spare = spare.data();
 
@@ -276,8 +285,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     Subtree top;
     top.nodes.resize(1);
     std::vector<BuildTask> deferred;
-    std::deque<RecordVector> arrays; // the top's spatial splits' children
-    builder.buildTop(top, root, team, std::max(kMinTaskSize, total / 64), deferred, arrays);
+    builder.buildTop(top, root, team, std::max(kMinTaskSize, total / 64), deferred);
 
     // The subtrees, largest first (the order they finish in does not matter).
     std::vector<Subtree> subtrees(deferred.size());

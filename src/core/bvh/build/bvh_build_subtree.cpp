@@ -144,10 +144,9 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
 
 void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
     std::vector<BuildTask> stack{root};
-    std::deque<RecordVector> arrays; // the children of spatial splits
     BinSet scratch;
     std::vector<BinSet> noChunks;
-    RecordVector lefts, rights;
+    RecordVector rights; // a spatial split's right side, until it is kept
     while (!stack.empty()) {
         const BuildTask task = stack.back();
         stack.pop_back();
@@ -159,23 +158,21 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         BuildTask left, right;
         SplitKind kind = choice.kind;
         if (kind == SplitKind::Spatial) {
-            lefts.clear();
-            rights.clear();
-            applySpatialSplit(*context_.scene, task.first, task.first + task.count, choice.spatial,
-                              context_.slack, lefts, rights, left.bounds, right.bounds);
-            if (keepsSpatialSplit(choice, task.count, task.splitBudget, lefts.size(), left.bounds,
-                                  rights.size(), right.bounds)) {
-                RecordVector& both = arrays.emplace_back();
-                both.reserve(lefts.size() + rights.size());
-                both.insert(both.end(), lefts.begin(), lefts.end());
-                both.insert(both.end(), rights.begin(), rights.end());
-                RecordVector& spare = arrays.emplace_back(both.size());
-                left.first = both.data();
-                left.spare = spare.data();
-                left.count = static_cast<uint32_t>(lefts.size());
-                right.first = both.data() + lefts.size();
-                right.spare = spare.data() + lefts.size();
-                right.count = static_cast<uint32_t>(rights.size());
+            // The left side straight into the spare room, the right side aside: where it goes
+            // depends on the left side's size, and the split may yet fall back.
+            if (rights.size() < task.count) {
+                rights.resize(task.count);
+            }
+            const SpatialSides made = applySpatialSplit(
+                *context_.scene, task.first, task.first + task.count, choice.spatial,
+                context_.slack, task.spare, rights.data(), left.bounds, right.bounds);
+            if (keepsSpatialSplit(choice, task.count, task.splitBudget, made.left, left.bounds,
+                                  made.right, right.bounds)) {
+                left.count = static_cast<uint32_t>(made.left);
+                right.count = static_cast<uint32_t>(made.right);
+                shareSplitBudget(task, left, right);
+                placeChildren(task.spare, task.first, left, right);
+                std::copy_n(rights.data(), made.right, right.first);
             } else {
                 kind = choice.fallback;
                 left.bounds = right.bounds = RecordBounds{};
@@ -184,22 +181,20 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         if (kind == SplitKind::Object) {
             // Into the spare room, which the children then own as their references; the
             // parent's room becomes their spare.
-            partitionRecords(task.first, task.first + task.count, choice.object, task.spare,
-                             task.spare + choice.object.leftCount, left.bounds, right.bounds);
-            left.first = task.spare;
-            left.spare = task.first;
             left.count = choice.object.leftCount;
-            right.first = task.spare + left.count;
-            right.spare = task.first + left.count;
             right.count = task.count - left.count;
+            shareSplitBudget(task, left, right);
+            placeChildren(task.spare, task.first, left, right);
+            partitionRecords(task.first, task.first + task.count, choice.object, left.first,
+                             right.first, left.bounds, right.bounds);
         } else if (kind == SplitKind::Median) {
             medianOrder(task.first, task.count, task.bounds);
-            left.first = task.first;
-            left.spare = task.spare;
             left.count = task.count / 2;
-            right.first = task.first + left.count;
-            right.spare = task.spare + left.count;
             right.count = task.count - left.count;
+            shareSplitBudget(task, left, right);
+            placeChildren(task.first, task.spare, left, right);
+            std::copy_backward(task.first + left.count, task.first + task.count,
+                               right.first + right.count); // right's room starts after left's
             left.bounds = boundsOf(left.first, left.first + left.count);
             right.bounds = boundsOf(right.first, right.first + right.count);
         } else if (kind == SplitKind::Leaf) {
@@ -232,20 +227,30 @@ void Subtree::addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count) {
     }
 }
 
+void shareSplitBudget(const BuildTask& task, BuildTask& left, BuildTask& right) {
+    const std::size_t sizes = std::size_t{left.count} + right.count;
+    const uint64_t budget =
+        task.splitBudget - std::min<uint64_t>(task.splitBudget, sizes - task.count);
+    left.splitBudget = static_cast<uint32_t>(budget * left.count / sizes);
+    right.splitBudget = static_cast<uint32_t>(budget) - left.splitBudget;
+}
+
+void placeChildren(PrimRecord* to, PrimRecord* from, BuildTask& left, BuildTask& right) {
+    left.first = to;
+    left.spare = from;
+    right.first = to + left.room();
+    right.spare = from + left.room();
+}
+
 void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,
                        std::vector<BuildTask>& stack) {
     const auto first = static_cast<uint32_t>(out.nodes.size());
     out.nodes.resize(out.nodes.size() + 2);
     out.nodes[task.slot].index = first;
     out.nodes[task.slot].count = 0;
-    const std::size_t sizes = std::size_t{left.count} + right.count;
-    const uint64_t budget =
-        task.splitBudget - std::min<uint64_t>(task.splitBudget, sizes - task.count);
     left.slot = first;
     right.slot = first + 1;
     left.depth = right.depth = task.depth + 1;
-    left.splitBudget = static_cast<uint32_t>(budget * left.count / sizes);
-    right.splitBudget = static_cast<uint32_t>(budget) - left.splitBudget;
     stack.push_back(right);
     stack.push_back(left);
 }

@@ -13,22 +13,33 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <vector>
 
 namespace raylab {
 
 // The references [first, first + count) of a subtree waiting to become the node at
-// nodes[slot]. The task may reorder them in place; it does not own them.
+// nodes[slot]. The task has the records [first, first + room()) and [spare, spare + room()) to
+// itself, free to overwrite but for its references: room for every reference its splits may
+// make, so that its children take their parts of both ranges and nothing is allocated.
 struct BuildTask {
     uint32_t slot = 0;
     PrimRecord* first = nullptr;
     uint32_t count = 0;
     RecordBounds bounds; // of the references: the node's box and its centroids' box
     int depth = 0;
-    uint32_t splitBudget = 0;    // extra references its spatial splits may still make
-    PrimRecord* spare = nullptr; // room for `count` references, free to overwrite
+    uint32_t splitBudget = 0; // extra references its spatial splits may still make
+    PrimRecord* spare = nullptr;
+    std::size_t room() const { return std::size_t{count} + splitBudget; }
 };
+
+// Shares what is left of task's split budget between its children, whose counts are set, by
+// their sizes: the split's own extra references (left.count + right.count - task.count) come
+// out of it first. The children's rooms then fill the parent's exactly.
+void shareSplitBudget(const BuildTask& task, BuildTask& left, BuildTask& right);
+
+// Places children whose counts and budgets are set: their references at `to` (left's room, then
+// right's), their spare rooms at the same offsets of `from`.
+void placeChildren(PrimRecord* to, PrimRecord* from, BuildTask& left, BuildTask& right);
 
 // What the build needs besides the references.
 struct BuildContext {
@@ -51,9 +62,9 @@ struct Subtree {
     void addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count);
 };
 
-// Makes task's node (out.nodes[task.slot]) an inner node over two new nodes for left and right,
-// shares the split budget task has left after the split by the children's sizes, and pushes them
-// on stack, left on top (so its subtree is built, and stored, first).
+// Makes task's node (out.nodes[task.slot]) an inner node over two new nodes for left and right
+// (placed: placeChildren) and pushes them on stack, left on top (so its subtree is built, and
+// stored, first).
 void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,
                        std::vector<BuildTask>& stack);
 
@@ -87,11 +98,9 @@ public:
     // size depends only on their count, bins merged and children written in chunk order (to
     // the parent's spare room: the two ranges swap roles at each level); nodes of at most
     // `deferBelow` references that must split are appended to `deferred` instead, their
-    // references left where they are. Spatial splits put their children in new arrays of
-    // `arrays`, which must outlive the deferred tasks. The result does not depend on the
-    // team's size.
+    // references left where they are. The result does not depend on the team's size.
     void buildTop(Subtree& out, BuildTask root, BuildTeam& team, std::size_t deferBelow,
-                  std::vector<BuildTask>& deferred, std::deque<RecordVector>& arrays) const;
+                  std::vector<BuildTask>& deferred) const;
 
     // A whole subtree on this thread, its references moving between their room and the spare
     // room at each split. Leaves' references go to out.leafTriangles in depth-first order, left

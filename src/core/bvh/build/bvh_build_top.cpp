@@ -8,8 +8,7 @@
 namespace raylab {
 
 void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std::size_t deferBelow,
-                              std::vector<BuildTask>& deferred,
-                              std::deque<RecordVector>& arrays) const {
+                              std::vector<BuildTask>& deferred) const {
     std::vector<BuildTask> stack{root};
     BinSet scratch;
     std::vector<BinSet> chunkBins;
@@ -41,12 +40,13 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 // threads made Sponza's top spatial splits 3-6 times slower on 2 threads.
                 // A reference goes to one side, or is cut into at most one part on each.
                 const auto size = static_cast<std::size_t>(chunkEnd(i) - chunkBegin(i));
-                RecordVector l, r;
-                l.reserve(size);
-                r.reserve(size);
+                RecordVector l(size), r(size);
                 RecordBounds lb, rb;
-                applySpatialSplit(*context_.scene, chunkBegin(i), chunkEnd(i), choice.spatial,
-                                  context_.slack, l, r, lb, rb);
+                const SpatialSides made =
+                    applySpatialSplit(*context_.scene, chunkBegin(i), chunkEnd(i), choice.spatial,
+                                      context_.slack, l.data(), r.data(), lb, rb);
+                l.resize(made.left);
+                r.resize(made.right);
                 lefts[i] = std::move(l);
                 rights[i] = std::move(r);
                 leftBounds[i] = lb;
@@ -61,11 +61,14 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             }
             if (keepsSpatialSplit(choice, count, task.splitBudget, leftSize, left.bounds, rightSize,
                                   right.bounds)) {
-                // Both children in one new array, left first (each side in chunk order), with
-                // as much spare room; the chunks' parts are copied on the team.
-                RecordVector& both = arrays.emplace_back(leftSize + rightSize);
+                // Each side in chunk order to its room in the parent's spare room; the chunks'
+                // parts are copied on the team.
+                left.count = static_cast<uint32_t>(leftSize);
+                right.count = static_cast<uint32_t>(rightSize);
+                shareSplitBudget(task, left, right);
+                placeChildren(task.spare, task.first, left, right);
                 std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
-                std::size_t l = 0, r = leftSize;
+                std::size_t l = 0, r = 0;
                 for (std::size_t i = 0; i < chunks; ++i) {
                     leftAt[i] = l;
                     rightAt[i] = r;
@@ -73,19 +76,9 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                     r += rights[i].size();
                 }
                 team.forEach(chunks, [&](std::size_t i) {
-                    std::copy(lefts[i].begin(), lefts[i].end(),
-                              both.begin() + static_cast<std::ptrdiff_t>(leftAt[i]));
-                    std::copy(rights[i].begin(), rights[i].end(),
-                              both.begin() + static_cast<std::ptrdiff_t>(rightAt[i]));
+                    std::copy(lefts[i].begin(), lefts[i].end(), left.first + leftAt[i]);
+                    std::copy(rights[i].begin(), rights[i].end(), right.first + rightAt[i]);
                 });
-                RecordVector& spare = arrays.emplace_back();
-                spare.resize(both.size());
-                left.first = both.data();
-                left.spare = spare.data();
-                left.count = static_cast<uint32_t>(leftSize);
-                right.first = both.data() + leftSize;
-                right.spare = spare.data() + leftSize;
-                right.count = static_cast<uint32_t>(rightSize);
             } else {
                 kind = choice.fallback;
                 left.bounds = right.bounds = RecordBounds{};
@@ -94,8 +87,12 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
         if (kind == SplitKind::Object) {
             // Each chunk's references go to their places in the spare room (offsets from the
             // chunks' bins), in the order of the parent; the parent's room becomes the spare.
+            left.count = choice.object.leftCount;
+            right.count = count - left.count;
+            shareSplitBudget(task, left, right);
+            placeChildren(task.spare, task.first, left, right);
             std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
-            std::size_t l = 0, r = choice.object.leftCount;
+            std::size_t l = 0, r = 0;
             for (std::size_t i = 0; i < chunks; ++i) {
                 leftAt[i] = l;
                 rightAt[i] = r;
@@ -107,8 +104,8 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             std::vector<RecordBounds> leftBounds(chunks), rightBounds(chunks);
             team.forEach(chunks, [&](std::size_t i) {
                 RecordBounds lb, rb; // stored once, as above
-                partitionRecords(chunkBegin(i), chunkEnd(i), choice.object, task.spare + leftAt[i],
-                                 task.spare + rightAt[i], lb, rb);
+                partitionRecords(chunkBegin(i), chunkEnd(i), choice.object, left.first + leftAt[i],
+                                 right.first + rightAt[i], lb, rb);
                 leftBounds[i] = lb;
                 rightBounds[i] = rb;
             });
@@ -116,20 +113,14 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 left.bounds.merge(leftBounds[i]);
                 right.bounds.merge(rightBounds[i]);
             }
-            left.first = task.spare;
-            left.spare = task.first;
-            left.count = choice.object.leftCount;
-            right.first = task.spare + left.count;
-            right.spare = task.first + left.count;
-            right.count = count - left.count;
         } else if (kind == SplitKind::Median) {
             medianOrder(task.first, count, task.bounds);
-            left.first = task.first;
-            left.spare = task.spare;
             left.count = count / 2;
-            right.first = task.first + left.count;
-            right.spare = task.spare + left.count;
             right.count = count - left.count;
+            shareSplitBudget(task, left, right);
+            placeChildren(task.first, task.spare, left, right);
+            std::copy_backward(task.first + left.count, task.first + count,
+                               right.first + right.count); // right's room starts after left's
             left.bounds = boundsOf(left.first, left.first + left.count);
             right.bounds = boundsOf(right.first, right.first + right.count);
         } else if (kind == SplitKind::Leaf) {

@@ -65,6 +65,28 @@ int addToRanges(const PrimRecord* first, std::size_t count, std::size_t stride, 
     return levelsUsed;
 }
 
+struct CrossingParts {
+    SseBox left, right;
+    bool leftEmpty = true, rightEmpty = true;
+};
+
+// The parts on each side of the plane x[a] = position of a reference (box lo, hi) of triangle t
+// that crosses it (splitBoxSse). Out of line: inlined into applySpatialSplit, its registers
+// pushed the sides' bounds out of registers, to the stack, in the loop over every reference,
+// though most do not cross (Sponza's build spent 28% less in applySpatialSplit and this
+// together; the same trees).
+[[gnu::noinline]] CrossingParts cutCrossing(const Triangle& t, __m128 lo, __m128 hi, int a,
+                                            float position, float slack) {
+    CrossingParts parts;
+    SseBox box;
+    box.lower = lo;
+    box.upper = hi;
+    splitBoxSse(t, box, a, position, slack, parts.left, parts.right);
+    parts.leftEmpty = isEmpty(parts.left);
+    parts.rightEmpty = isEmpty(parts.right);
+    return parts;
+}
+
 } // namespace
 
 void SpatialBins::merge(const SpatialBins& other) {
@@ -155,19 +177,14 @@ SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int a
     return best;
 }
 
-void applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
-                       const SpatialSplit& split, float slack, RecordVector& left,
-                       RecordVector& right, RecordBounds& leftBounds, RecordBounds& rightBounds) {
+SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                               const SpatialSplit& split, float slack, PrimRecord* left,
+                               PrimRecord* right, RecordBounds& leftBounds,
+                               RecordBounds& rightBounds) {
     const int a = split.axis;
-    // A reference goes to one side, or is cut into at most one part on each: room for all of
-    // them on both sides, written through pointers and cut back at the end, and the sides'
-    // bounds kept in registers, stored once.
-    const auto count = static_cast<std::size_t>(last - first);
-    const std::size_t leftStart = left.size(), rightStart = right.size();
-    left.resize(leftStart + count);
-    right.resize(rightStart + count);
-    PrimRecord* l = left.data() + leftStart;
-    PrimRecord* r = right.data() + rightStart;
+    // The sides' ends and bounds are kept in registers, stored once.
+    PrimRecord* l = left;
+    PrimRecord* r = right;
     RecordBounds lb = leftBounds, rb = rightBounds;
     const auto put = [](PrimRecord*& to, RecordBounds& bounds, __m128 lo, __m128 hi) {
         _mm_storeu_ps(&to->lower.x, lo);
@@ -184,27 +201,22 @@ void applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRe
         } else if (p->lower[a] >= split.position) {
             put(r, rb, lo, hi);
         } else {
-            SseBox box, leftPart, rightPart;
-            box.lower = lo;
-            box.upper = hi;
-            splitBoxSse(scene.triangles[p->sceneIndex], box, a, split.position, slack, leftPart,
-                        rightPart);
-            const bool leftEmpty = isEmpty(leftPart), rightEmpty = isEmpty(rightPart);
-            if (!leftEmpty) {
-                put(l, lb, withLane(indexLane, lo, leftPart.lower), leftPart.upper);
+            const CrossingParts parts =
+                cutCrossing(scene.triangles[p->sceneIndex], lo, hi, a, split.position, slack);
+            if (!parts.leftEmpty) {
+                put(l, lb, withLane(indexLane, lo, parts.left.lower), parts.left.upper);
             }
-            if (!rightEmpty) {
-                put(r, rb, withLane(indexLane, lo, rightPart.lower), rightPart.upper);
+            if (!parts.rightEmpty) {
+                put(r, rb, withLane(indexLane, lo, parts.right.lower), parts.right.upper);
             }
-            if (leftEmpty && rightEmpty) { // only if rounding lost the part: keep it whole
-                put(l, lb, lo, hi);
+            if (parts.leftEmpty && parts.rightEmpty) {
+                put(l, lb, lo, hi); // only if rounding lost the part: keep it whole
             }
         }
     }
-    left.resize(static_cast<std::size_t>(l - left.data()));
-    right.resize(static_cast<std::size_t>(r - right.data()));
     leftBounds = lb;
     rightBounds = rb;
+    return {static_cast<std::size_t>(l - left), static_cast<std::size_t>(r - right)};
 }
 
 } // namespace raylab

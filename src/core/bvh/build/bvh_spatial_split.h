@@ -61,10 +61,18 @@ void binSpatial(const PrimRecord* first, const PrimRecord* last, const Aabb& bou
 // The best spatial split across `axis` of a node with these bins and bounds.
 SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int axis);
 
-// Appends refs [first, last) to left and right by split's plane, splitting the references that
-// cross it, in the order of the input, and adds what it appends to the sides' bounds.
-void applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
-                       const SpatialSplit& split, float slack, RecordVector& left,
-                       RecordVector& right, RecordBounds& leftBounds, RecordBounds& rightBounds);
+// How many references a spatial split put on each side.
+struct SpatialSides {
+    std::size_t left = 0, right = 0;
+};
+
+// Writes refs [first, last) to left[0..) and right[0..) by split's plane, cutting the
+// references that cross it in two, each side in the order of the input, and adds what it writes
+// to the sides' bounds. A reference goes to one side or to both, so each side needs room for
+// (last - first) records; left and right must not overlap each other or the input.
+SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                               const SpatialSplit& split, float slack, PrimRecord* left,
+                               PrimRecord* right, RecordBounds& leftBounds,
+                               RecordBounds& rightBounds);
 
 } // namespace raylab
