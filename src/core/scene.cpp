@@ -1,9 +1,13 @@
 #include "scene.h"
 
 #include "finite.h"
+#include "triangle_validity_sse.h"
 
 #include <cmath>
+#include <cstddef>
+#include <emmintrin.h>
 #include <glm/geometric.hpp>
+#include <limits>
 
 namespace raylab {
 
@@ -27,13 +31,6 @@ glm::vec3 geometricNormal(const Triangle& triangle) {
     return length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f);
 }
 
-bool isValidTriangle(const Triangle& triangle) {
-    if (!isFinite(triangle.v0) || !isFinite(triangle.v1) || !isFinite(triangle.v2)) {
-        return false;
-    }
-    const glm::vec3 n = glm::cross(triangle.v1 - triangle.v0, triangle.v2 - triangle.v0);
-    const float area2 = glm::dot(n, n);
-    return area2 > 0.0f && std::isfinite(area2);
-}
+bool isValidTriangle(const Triangle& triangle) { return isValidTriangle(TriangleLanes(triangle)); }
 
 } // namespace raylab

@@ -199,5 +199,54 @@ TEST(TriangleIntersection, ClosestHitPicksNearestAndLowerIndexOnTies) {
     EXPECT_EQ(hit.triangle, 2u);
 }
 
+// isValidTriangle's SSE2 lanes decide as the plain formula does: every coordinate finite and
+// |cross(v1 - v0, v2 - v0)|^2 (glm's cross and dot, in their order) positive and finite, also
+// where that square underflows to 0 or overflows, for triangles of every scale.
+TEST(TriangleIntersection, ValidTrianglesAreThoseOfThePlainFormula) {
+    const auto plain = [](const Triangle& t) {
+        for (const glm::vec3& p : {t.v0, t.v1, t.v2}) {
+            for (int a = 0; a < 3; ++a) {
+                if (!std::isfinite(p[a])) {
+                    return false;
+                }
+            }
+        }
+        const glm::vec3 n = glm::cross(t.v1 - t.v0, t.v2 - t.v0);
+        const float area2 = glm::dot(n, n);
+        return area2 > 0.0f && std::isfinite(area2);
+    };
+    const float specials[] = {std::numeric_limits<float>::quiet_NaN(),
+                              std::numeric_limits<float>::infinity(),
+                              -std::numeric_limits<float>::infinity(),
+                              0.0f,
+                              -0.0f,
+                              std::numeric_limits<float>::max(),
+                              std::numeric_limits<float>::denorm_min()};
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> exponent(-70, 70), pick(0, 15);
+    int valid = 0, invalid = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const float scale = std::ldexp(1.0f, exponent(rng)); // area2 from underflow to overflow
+        Triangle t;
+        glm::vec3* v[3] = {&t.v0, &t.v1, &t.v2};
+        for (glm::vec3* p : v) {
+            for (int a = 0; a < 3; ++a) {
+                const int k = pick(rng);
+                (*p)[a] = k < 7 && i % 5 == 0 ? specials[k] : scale * unit(rng);
+            }
+        }
+        if (i % 7 == 0) {
+            t.v2 = t.v0 + (t.v1 - t.v0) * 0.5f; // collinear, or nearly after rounding
+        }
+        t.material = static_cast<uint32_t>(i);
+        const bool expected = plain(t);
+        ASSERT_EQ(isValidTriangle(t), expected) << i;
+        (expected ? valid : invalid) += 1;
+    }
+    EXPECT_GT(valid, 50000);
+    EXPECT_GT(invalid, 20000);
+}
+
 } // namespace
 } // namespace raylab

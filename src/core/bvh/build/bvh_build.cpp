@@ -16,6 +16,7 @@
 #include "bvh/build/bvh_spatial_split.h"
 #include "bvh/bvh.h"
 #include "render/parallel_tiles.h"
+#include "triangle_validity_sse.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,21 +53,35 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
     std::vector<ChunkFacts> facts(chunks);
     team.forEach(chunks, [&](std::size_t c) {
         PrimRecord* out = records.data() + c * kRecordChunk;
-        ChunkFacts f;
+        std::size_t made = 0;
+        // In SSE2 lanes, each minimum and maximum taken as glm::min(a, b) and glm::max(a, b)
+        // take it (_mm_min_ps(b, a): the same zeros' signs), so the same records and facts.
+        SseBox chunkBox;
+        __m128 chunkWidest = _mm_setzero_ps();
+        const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
         for (std::size_t i = c * kRecordChunk; i < std::min(triangles, (c + 1) * kRecordChunk);
              ++i) {
-            const Triangle& t = scene.triangles[i];
+            const TriangleLanes t(scene.triangles[i]);
             if (!isValidTriangle(t)) {
                 continue;
             }
-            const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
-            const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
-            f.widest = glm::max(f.widest, upper - lower);
-            f.box.extend(lower);
-            f.box.extend(upper);
-            out[f.made++] = {lower, static_cast<uint32_t>(i), upper, 0.0f};
+            const __m128 lower = _mm_min_ps(_mm_min_ps(t.v2, t.v1), t.v0);
+            const __m128 upper = _mm_max_ps(_mm_max_ps(t.v2, t.v1), t.v0);
+            chunkWidest = _mm_max_ps(_mm_sub_ps(upper, lower), chunkWidest);
+            for (const __m128 corner : {lower, upper}) { // Aabb::extend, corner by corner
+                chunkBox.lower = _mm_min_ps(corner, chunkBox.lower);
+                chunkBox.upper = _mm_max_ps(corner, chunkBox.upper);
+            }
+            // The record: lane 3 of the lower corner the scene index, of the upper one 0.
+            const __m128 index =
+                _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128(static_cast<int>(i)), 12));
+            _mm_storeu_ps(&out[made].lower.x, _mm_or_ps(_mm_and_ps(xyz, lower), index));
+            _mm_storeu_ps(&out[made].upper.x, _mm_and_ps(xyz, upper));
+            ++made;
         }
-        facts[c] = f;
+        alignas(16) float w[4];
+        _mm_store_ps(w, chunkWidest);
+        facts[c] = ChunkFacts{made, chunkBox.toAabb(), glm::vec3(w[0], w[1], w[2])};
     });
     std::size_t at = 0;
     for (std::size_t c = 0; c < chunks; ++c) {
