@@ -11,13 +11,19 @@
 
 namespace raylab {
 
-// The triangle's vertices in lanes x, y, z; lane 3 holds the next member (ignored).
+// The triangle's vertices in lanes x, y, z, lane 3 zero: loaded, it holds the next member, and
+// v2's is the material index, whose bits are a denormal float (arithmetic on denormals can
+// cost a hundred cycles).
 struct TriangleLanes {
     __m128 v0, v1, v2;
     explicit TriangleLanes(const Triangle& t)
-        : v0(_mm_loadu_ps(&t.v0.x)), v1(_mm_loadu_ps(&t.v1.x)), v2(_mm_loadu_ps(&t.v2.x)) {
+        : v0(xyz(_mm_loadu_ps(&t.v0.x))), v1(xyz(_mm_loadu_ps(&t.v1.x))),
+          v2(xyz(_mm_loadu_ps(&t.v2.x))) {
         static_assert(offsetof(Triangle, v1) == 12 && offsetof(Triangle, v2) == 24 &&
                       sizeof(Triangle) >= 40);
+    }
+    static __m128 xyz(__m128 v) {
+        return _mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
     }
 };
 

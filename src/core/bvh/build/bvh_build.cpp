@@ -58,7 +58,6 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
         // take it (_mm_min_ps(b, a): the same zeros' signs), so the same records and facts.
         SseBox chunkBox;
         __m128 chunkWidest = _mm_setzero_ps();
-        const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
         for (std::size_t i = c * kRecordChunk; i < std::min(triangles, (c + 1) * kRecordChunk);
              ++i) {
             const TriangleLanes t(scene.triangles[i]);
@@ -72,11 +71,12 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
                 chunkBox.lower = _mm_min_ps(corner, chunkBox.lower);
                 chunkBox.upper = _mm_max_ps(corner, chunkBox.upper);
             }
-            // The record: lane 3 of the lower corner the scene index, of the upper one 0.
+            // The record: lane 3 of the lower corner the scene index, of the upper one 0 (as
+            // TriangleLanes' lanes 3 are).
             const __m128 index =
                 _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128(static_cast<int>(i)), 12));
-            _mm_storeu_ps(&out[made].lower.x, _mm_or_ps(_mm_and_ps(xyz, lower), index));
-            _mm_storeu_ps(&out[made].upper.x, _mm_and_ps(xyz, upper));
+            _mm_storeu_ps(&out[made].lower.x, _mm_or_ps(lower, index));
+            _mm_storeu_ps(&out[made].upper.x, upper);
             ++made;
         }
         alignas(16) float w[4];
