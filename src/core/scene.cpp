@@ -4,10 +4,7 @@
 #include "triangle_validity_sse.h"
 
 #include <cmath>
-#include <cstddef>
-#include <emmintrin.h>
 #include <glm/geometric.hpp>
-#include <limits>
 
 namespace raylab {
 

@@ -418,27 +418,25 @@ TEST(BvhSpatialSplit, ChildrenShareTheParentsRoom) {
     parent.count = 100;
     parent.splitBudget = 30;
     BuildTask left, right;
-    left.count = 55; // a spatial split that made 10 extra references
-    right.count = 55;
-    shareSplitBudget(parent, left, right);
+    RecordVector to(parent.room()), from(parent.room());
+    // A spatial split that made 10 extra references.
+    placeChildren(parent, 55, 55, to.data(), from.data(), left, right);
+    EXPECT_EQ(left.count, 55u);
+    EXPECT_EQ(right.count, 55u);
     EXPECT_EQ(left.splitBudget + right.splitBudget, 20u);
     EXPECT_EQ(left.splitBudget, 10u); // by size
     EXPECT_EQ(left.room() + right.room(), parent.room());
-    RecordVector to(parent.room()), from(parent.room());
-    placeChildren(to.data(), from.data(), left, right);
     EXPECT_EQ(left.first, to.data());
     EXPECT_EQ(left.spare, from.data());
     EXPECT_EQ(right.first, to.data() + left.room());
     EXPECT_EQ(right.spare, from.data() + left.room());
 
-    left.count = 80; // an object split: the whole budget left, shared by size
-    right.count = 20;
-    shareSplitBudget(parent, left, right);
+    // An object split: the whole budget left, shared by size.
+    placeChildren(parent, 80, 20, to.data(), from.data(), left, right);
     EXPECT_EQ(left.splitBudget, 24u);
     EXPECT_EQ(right.splitBudget, 6u);
-    left.count = 70; // over budget (kept only by a caller that checked): no room to share
-    right.count = 70;
-    shareSplitBudget(parent, left, right);
+    // Over budget (kept only by a caller that checked): no room to share.
+    placeChildren(parent, 70, 70, to.data(), from.data(), left, right);
     EXPECT_EQ(left.splitBudget + right.splitBudget, 0u);
 }
 

@@ -168,10 +168,7 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
                 context_.slack, task.spare, rights.data(), left.bounds, right.bounds);
             if (keepsSpatialSplit(choice, task.count, task.splitBudget, made.left, left.bounds,
                                   made.right, right.bounds)) {
-                left.count = static_cast<uint32_t>(made.left);
-                right.count = static_cast<uint32_t>(made.right);
-                shareSplitBudget(task, left, right);
-                placeChildren(task.spare, task.first, left, right);
+                placeChildren(task, made.left, made.right, task.spare, task.first, left, right);
                 std::copy_n(rights.data(), made.right, right.first);
             } else {
                 kind = choice.fallback;
@@ -181,22 +178,12 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         if (kind == SplitKind::Object) {
             // Into the spare room, which the children then own as their references; the
             // parent's room becomes their spare.
-            left.count = choice.object.leftCount;
-            right.count = task.count - left.count;
-            shareSplitBudget(task, left, right);
-            placeChildren(task.spare, task.first, left, right);
+            placeChildren(task, choice.object.leftCount, task.count - choice.object.leftCount,
+                          task.spare, task.first, left, right);
             partitionRecords(task.first, task.first + task.count, choice.object, left.first,
                              right.first, left.bounds, right.bounds);
         } else if (kind == SplitKind::Median) {
-            medianOrder(task.first, task.count, task.bounds);
-            left.count = task.count / 2;
-            right.count = task.count - left.count;
-            shareSplitBudget(task, left, right);
-            placeChildren(task.first, task.spare, left, right);
-            std::copy_backward(task.first + left.count, task.first + task.count,
-                               right.first + right.count); // right's room starts after left's
-            left.bounds = boundsOf(left.first, left.first + left.count);
-            right.bounds = boundsOf(right.first, right.first + right.count);
+            splitAtMedian(task, left, right);
         } else if (kind == SplitKind::Leaf) {
             out.addLeaf(task.slot, task.first, task.count);
             continue;
@@ -227,19 +214,28 @@ void Subtree::addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count) {
     }
 }
 
-void shareSplitBudget(const BuildTask& task, BuildTask& left, BuildTask& right) {
-    const std::size_t sizes = std::size_t{left.count} + right.count;
+void placeChildren(const BuildTask& task, std::size_t leftCount, std::size_t rightCount,
+                   PrimRecord* to, PrimRecord* from, BuildTask& left, BuildTask& right) {
+    left.count = static_cast<uint32_t>(leftCount);
+    right.count = static_cast<uint32_t>(rightCount);
+    const std::size_t sizes = leftCount + rightCount;
     const uint64_t budget =
         task.splitBudget - std::min<uint64_t>(task.splitBudget, sizes - task.count);
     left.splitBudget = static_cast<uint32_t>(budget * left.count / sizes);
     right.splitBudget = static_cast<uint32_t>(budget) - left.splitBudget;
-}
-
-void placeChildren(PrimRecord* to, PrimRecord* from, BuildTask& left, BuildTask& right) {
     left.first = to;
     left.spare = from;
     right.first = to + left.room();
     right.spare = from + left.room();
+}
+
+void splitAtMedian(const BuildTask& task, BuildTask& left, BuildTask& right) {
+    medianOrder(task.first, task.count, task.bounds);
+    const uint32_t half = task.count / 2;
+    placeChildren(task, half, task.count - half, task.first, task.spare, left, right);
+    std::copy_backward(task.first + half, task.first + task.count, right.first + right.count);
+    left.bounds = boundsOf(left.first, left.first + left.count);
+    right.bounds = boundsOf(right.first, right.first + right.count);
 }
 
 void splitIntoChildren(const BuildTask& task, BuildTask left, BuildTask right, Subtree& out,

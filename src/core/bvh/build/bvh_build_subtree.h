@@ -32,14 +32,16 @@ struct BuildTask {
     std::size_t room() const { return std::size_t{count} + splitBudget; }
 };
 
-// Shares what is left of task's split budget between its children, whose counts are set, by
-// their sizes: the split's own extra references (left.count + right.count - task.count) come
-// out of it first. The children's rooms then fill the parent's exactly.
-void shareSplitBudget(const BuildTask& task, BuildTask& left, BuildTask& right);
+// Sets task's children's counts and budgets and places them: what is left of task's split
+// budget after the split's own extra references (leftCount + rightCount - task.count) is shared
+// by their sizes; their references go at `to` (left's room, then right's), their spare rooms at
+// the same offsets of `from`. The children's rooms then fill the parent's exactly.
+void placeChildren(const BuildTask& task, std::size_t leftCount, std::size_t rightCount,
+                   PrimRecord* to, PrimRecord* from, BuildTask& left, BuildTask& right);
 
-// Places children whose counts and budgets are set: their references at `to` (left's room, then
-// right's), their spare rooms at the same offsets of `from`.
-void placeChildren(PrimRecord* to, PrimRecord* from, BuildTask& left, BuildTask& right);
+// Splits task's references at the median in place (medianOrder), the right half moved on to
+// leave the left its room, and places the children with their bounds.
+void splitAtMedian(const BuildTask& task, BuildTask& left, BuildTask& right);
 
 // What the build needs besides the references.
 struct BuildContext {

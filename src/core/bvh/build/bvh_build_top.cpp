@@ -63,10 +63,7 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                                   right.bounds)) {
                 // Each side in chunk order to its room in the parent's spare room; the chunks'
                 // parts are copied on the team.
-                left.count = static_cast<uint32_t>(leftSize);
-                right.count = static_cast<uint32_t>(rightSize);
-                shareSplitBudget(task, left, right);
-                placeChildren(task.spare, task.first, left, right);
+                placeChildren(task, leftSize, rightSize, task.spare, task.first, left, right);
                 std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
                 std::size_t l = 0, r = 0;
                 for (std::size_t i = 0; i < chunks; ++i) {
@@ -87,10 +84,8 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
         if (kind == SplitKind::Object) {
             // Each chunk's references go to their places in the spare room (offsets from the
             // chunks' bins), in the order of the parent; the parent's room becomes the spare.
-            left.count = choice.object.leftCount;
-            right.count = count - left.count;
-            shareSplitBudget(task, left, right);
-            placeChildren(task.spare, task.first, left, right);
+            placeChildren(task, choice.object.leftCount, count - choice.object.leftCount,
+                          task.spare, task.first, left, right);
             std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
             std::size_t l = 0, r = 0;
             for (std::size_t i = 0; i < chunks; ++i) {
@@ -114,15 +109,7 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 right.bounds.merge(rightBounds[i]);
             }
         } else if (kind == SplitKind::Median) {
-            medianOrder(task.first, count, task.bounds);
-            left.count = count / 2;
-            right.count = count - left.count;
-            shareSplitBudget(task, left, right);
-            placeChildren(task.first, task.spare, left, right);
-            std::copy_backward(task.first + left.count, task.first + count,
-                               right.first + right.count); // right's room starts after left's
-            left.bounds = boundsOf(left.first, left.first + left.count);
-            right.bounds = boundsOf(right.first, right.first + right.count);
+            splitAtMedian(task, left, right);
         } else if (kind == SplitKind::Leaf) {
             out.addLeaf(task.slot, task.first, count);
             continue;
