@@ -410,6 +410,19 @@ TEST(BvhSpatialSplit, BudgetAboveOneIsTakenAsOne) {
               0);
 }
 
+// A node whose budget is under a twentieth of its references tries no spatial split, and as
+// the budget is shared by size, neither does its subtree (but where sharing's rounding gives a
+// child a reference more than its part): a root budget of 3% gives no extra references, one of
+// 6% some.
+TEST(BvhSpatialSplit, BudgetUnderATwentiethTriesNone) {
+    const Scene scene = makeRoom(3000, 53);
+    const std::size_t valid = scene.triangles.size();
+    EXPECT_EQ(buildBvh(scene, spatialOnly(0.03f)).leafReferences, valid);
+    const Bvh over = buildBvh(scene, spatialOnly(0.06f));
+    EXPECT_GT(over.leafReferences, valid);
+    EXPECT_LE(over.leafReferences, valid + valid * 6 / 100);
+}
+
 // A split's children take their parts of the parent's two ranges: each child's references
 // and spare room are followed by room for its share of the budget, and the two rooms fill the
 // parent's exactly, without overlapping.
