@@ -92,11 +92,12 @@ struct BvhBuildOptions {
     float presplitBudget = 0.0f;
     // Spatial splits (bvh_spatial_split.h): at most this fraction of the references (after
     // pre-splitting) in extra references (0 = none; above 1 taken as 1: the build keeps room for
-    // them all from the start). Tried only at nodes of at least 64
-    // references whose best object split leaves child boxes overlapping by more than
-    // spatialSplitOverlap times the root's surface area (Stich et al.'s alpha) and
-    // spatialSplitNodeOverlap times the node's own: the second test skips the many small nodes of
-    // finely tessellated meshes, where spatial splits cost build time and gain nothing (dragon).
+    // them all from the start). Tried only at nodes of at least 64 references with a budget
+    // left of at least a twentieth of them, whose best object split leaves child boxes
+    // overlapping by more than spatialSplitOverlap times the root's surface area (Stich et al.'s
+    // alpha) and spatialSplitNodeOverlap times the node's own: the second test skips the many
+    // small nodes of finely tessellated meshes, where spatial splits cost build time and gain
+    // nothing (dragon).
     // Not tried at all in a scene whose every triangle spans at most 1/16 of the scene's extent on
     // every axis (an evenly tessellated scan: bvh_build.cpp).
     float spatialSplitBudget = 0.3f;
