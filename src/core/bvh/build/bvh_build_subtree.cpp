@@ -18,8 +18,8 @@ constexpr float kMinSpatialOverreach = 1.0f;
 // the node's work and rarely wins (the thin triangles' build 12% fewer instructions, their rays'
 // work the same; PERFORMANCE.md, "The BVH build").
 constexpr uint32_t kMinSpatialCount = 64;
-// Nor at nodes whose split budget is under this fraction of their references: there a cut
-// across the node rarely fits in the budget, and as the budget is shared by size, their whole
+// Nor at nodes whose split budget is under a kMinSpatialBudgetPer-th of their references: a cut
+// across such a node rarely fits in its budget, and as the budget is shared by size, its whole
 // subtree tries none. The thin triangles' nodes reach it once the top levels' splits have used
 // most of the budget: 9 of their 1,716 tries below it won, Sponza's 4 of 34; without them the
 // thin triangles' build takes 13% fewer instructions and their rays trace as fast
