@@ -88,7 +88,7 @@ struct BvhBuildOptions {
     // triangles; 0 = none. Triangles of similar shape and size get none whatever the budget.
     // None by default: with the spatial splits below, pre-splitting Sponza (the one scene of
     // the bench that gets any) at 0.3 left its rays' work the same (counted) and cost 17% of
-    // its build and 5% of its memory (PERFORMANCE.md, "Build, memory, agreement").
+    // its build and 5% of its memory (PERFORMANCE.md, "What each change gained: the BVH build").
     float presplitBudget = 0.0f;
     // Spatial splits (bvh_spatial_split.h): at most this fraction of the references (after
     // pre-splitting) in extra references (0 = none; above 1 taken as 1: the build keeps room for
@@ -130,10 +130,10 @@ bool interleavesRays(const Bvh& bvh);
 // The size from which closestHits interleaves: the CPU's level 3 cache as the system reports it
 // (interleaveFromBytes() asks glibc once), or kInterleaveWithoutCacheSize where it reports none.
 // Measured on raylab-bench's bounce rays, interleaved over one by one (PERFORMANCE.md,
-// "Interleaved walks"): on the Zen 4 (a 32 MiB cache), the bounce rays alone, 1 thread: the
-// dragon (45 MiB) 1.14-1.25x, the dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to 70%
-// (32 MiB) 1.01-1.05x, to half (22 MiB) 0.96-0.99x, Sponza (16 MiB) 0.75-0.83x, the bunny (4 MiB)
-// 0.90-0.94x. On the Intel Xeon (300 MiB), where the dragon and the 980,000-triangle terrain
+// "Interleaved walks (`closestHits`)"): on the Zen 4 (a 32 MiB cache), the bounce rays alone, 1
+// thread: the dragon (45 MiB) 1.14-1.25x, the dragon's triangles cut to 85% (38 MiB) 1.06-1.08x, to
+// 70% (32 MiB) 1.01-1.05x, to half (22 MiB) 0.96-0.99x, Sponza (16 MiB) 0.75-0.83x, the bunny (4
+// MiB) 0.90-0.94x. On the Intel Xeon (300 MiB), where the dragon and the 980,000-triangle terrain
 // (52 MiB) fit, the whole bounce workload over Embree's was as high or higher one by one: on 2
 // threads the dragon's 1.18-1.35 against 1.11-1.20.
 std::size_t interleaveFromBytes(long lastLevelCacheBytes);

@@ -16,18 +16,19 @@ constexpr float kTraversalCost = 1.0f; // SAH: one node visit, in units of one t
 constexpr float kMinSpatialOverreach = 1.0f;
 // Spatial splits are not tried at nodes of fewer references: there a try costs a large share of
 // the node's work and rarely wins (the thin triangles' build 12% fewer instructions, their rays'
-// work the same; PERFORMANCE.md, "The BVH build").
+// work the same; PERFORMANCE.md, "What each change gained: the BVH build").
 constexpr uint32_t kMinSpatialCount = 64;
 // Nor at nodes whose split budget is under a kMinSpatialBudgetPer-th of their references: a cut
 // across such a node rarely fits in its budget, and as the budget is shared by size, its whole
 // subtree tries none. The thin triangles' nodes reach it once the top levels' splits have used
 // most of the budget: 9 of their 1,716 tries below it won, Sponza's 4 of 34; without them the
 // thin triangles' build takes 13% fewer instructions and their rays trace as fast
-// (PERFORMANCE.md, "The BVH build").
+// (PERFORMANCE.md, "What each change gained: the BVH build").
 constexpr uint64_t kMinSpatialBudgetPer = 20; // budget * 20 >= references
 // Nodes of more than kSpatialSampleFrom references bin a sample of at least kSpatialSample of
 // them for their spatial split (every count / kSpatialSample-th reference); the split is then
-// checked on the references it makes (keepsSpatialSplit). PERFORMANCE.md, "The BVH build".
+// checked on the references it makes (keepsSpatialSplit). PERFORMANCE.md, "What each change gained:
+// the BVH build".
 constexpr uint32_t kSpatialSampleFrom = 2048;
 constexpr uint32_t kSpatialSample = 1024;
 
@@ -93,7 +94,7 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     // The best spatial split, where the object split's children overlap much, across the
     // object split's axis: the cut competes with that split where its children overlap.
     // Binning the other two axes as well took half of Sponza's build, and its trees traced
-    // slower (PERFORMANCE.md, "The BVH build").
+    // slower (PERFORMANCE.md, "What each change gained: the BVH build").
     const bool trySpatial = count >= kMinSpatialCount && splitBudget > 0 && context_.scene &&
                             uint64_t{splitBudget} * kMinSpatialBudgetPer >= count &&
                             choice.object.axis >= 0 &&

@@ -9,7 +9,7 @@ namespace {
 
 // How long a thread between loops spins before it sleeps: the build's top runs loops back to
 // back with a few microseconds of one thread's work between them, and a sleeping thread takes
-// tens of microseconds to wake (PERFORMANCE.md, "The BVH build").
+// tens of microseconds to wake (PERFORMANCE.md, "What each change gained: the BVH build").
 constexpr auto kSpin = std::chrono::microseconds(100);
 
 } // namespace

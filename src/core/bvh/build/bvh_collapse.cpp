@@ -4,7 +4,7 @@
 // test costs about as much as a 4-lane one, and it saves the box tests below it. A subtree whose
 // two children are such leaves becomes one leaf of two blocks: it saves the wide node that would
 // hold just those two (a third of the dragon's wide nodes did) and measured no slower
-// (PERFORMANCE.md, "BVH memory").
+// (PERFORMANCE.md, "What each change gained: memory").
 //
 // Leaves share blocks: each leaf's triangles take consecutive lanes of one block (a leaf of more
 // than 8, of two), the leaves of a part packed best fit, largest first. A ray that tests a

@@ -9,8 +9,8 @@
 // that knows its near and far planes (the single-ray tests) scales 1/d and the limit rather
 // than the far distance: the product then leaves the chain of dependent operations between a
 // node's load and its children's mask, which bounds a single ray walked alone (3-4% less time a
-// bounce ray: PERFORMANCE.md, "Bounce rays: the single-ray traversal"). The packets take both
-// planes' distances for either sign and scale the far one.
+// bounce ray: PERFORMANCE.md, "What each change gained: single rays and bounce rays"). The packets
+// take both planes' distances for either sign and scale the far one.
 
 #include "ray.h"
 
