@@ -46,13 +46,20 @@ BvhBuildOptions spatialOnly(float budget) {
     return options;
 }
 
-TEST(BvhSpatialSplit, SplitsLargeTrianglesWithinTheBudget) {
-    const Scene scene = makeRoom(3000, 41);
+// At spatial budget `none` the build makes no extra references; at `some` it makes some, and no
+// more than the budget allows.
+void expectSplitsOnlyFrom(const Scene& scene, float none, float some) {
     const std::size_t valid = scene.triangles.size();
-    EXPECT_EQ(buildBvh(scene, spatialOnly(0.0f)).leafReferences, valid);
-    const Bvh bvh = buildBvh(scene, spatialOnly(0.3f));
-    EXPECT_GT(bvh.leafReferences, valid);
-    EXPECT_LE(bvh.leafReferences, valid + valid * 3 / 10);
+    EXPECT_EQ(buildBvh(scene, spatialOnly(none)).leafReferences, valid) << "budget " << none;
+    const Bvh bvh = buildBvh(scene, spatialOnly(some));
+    EXPECT_GT(bvh.leafReferences, valid) << "budget " << some;
+    EXPECT_LE(bvh.leafReferences, valid + static_cast<std::size_t>(static_cast<double>(some) *
+                                                                   static_cast<double>(valid)))
+        << "budget " << some;
+}
+
+TEST(BvhSpatialSplit, SplitsLargeTrianglesWithinTheBudget) {
+    expectSplitsOnlyFrom(makeRoom(3000, 41), 0.0f, 0.3f);
 }
 
 // Where every triangle spans at most 1/16 of the scene on every axis (the room's small
@@ -415,12 +422,7 @@ TEST(BvhSpatialSplit, BudgetAboveOneIsTakenAsOne) {
 // child a reference more than its part): a root budget of 3% gives no extra references, one of
 // 6% some.
 TEST(BvhSpatialSplit, BudgetUnderATwentiethTriesNone) {
-    const Scene scene = makeRoom(3000, 53);
-    const std::size_t valid = scene.triangles.size();
-    EXPECT_EQ(buildBvh(scene, spatialOnly(0.03f)).leafReferences, valid);
-    const Bvh over = buildBvh(scene, spatialOnly(0.06f));
-    EXPECT_GT(over.leafReferences, valid);
-    EXPECT_LE(over.leafReferences, valid + valid * 6 / 100);
+    expectSplitsOnlyFrom(makeRoom(3000, 53), 0.03f, 0.06f);
 }
 
 // A split's children take their parts of the parent's two ranges: each child's references
