@@ -165,6 +165,9 @@ int run(int argc, char** argv) {
     if (flags.presplitBudget >= 0.0f) {
         buildOptions.presplitBudget = flags.presplitBudget;
     }
+    if (flags.spatialMinGain >= 0.0f) {
+        buildOptions.spatialSplitMinGain = flags.spatialMinGain;
+    }
     Bvh bvh;
     double raylabBuildSeconds = 1e30;
     const auto buildsStart = std::chrono::steady_clock::now();

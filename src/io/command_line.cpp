@@ -590,6 +590,10 @@ const std::vector<Option>& options() {
          benchSwitch(&BenchOptions::noPasses)},
         {"--spatial-budget", "F", kBench, "BVH spatial splits: extra references, fraction 0 to 1",
          benchFraction(&BenchOptions::spatialBudget, 1.0f)},
+        {"--spatial-min-gain", "F", kBench,
+         "BVH spatial splits: kept where the SAH cost falls by F times the fraction of "
+         "references added, F >= 0",
+         benchFraction(&BenchOptions::spatialMinGain)},
         {"--presplit-budget", "F", kBench, "BVH pre-splitting: extra references, fraction >= 0",
          benchFraction(&BenchOptions::presplitBudget)},
         {"--embree-isa", "NAME", kBench,

@@ -35,6 +35,7 @@ struct BenchOptions {
     bool noPasses = false;        // --no-passes: no renderer passes
     float spatialBudget = -1.0f;  // --spatial-budget F; < 0: BvhBuildOptions' default
     float presplitBudget = -1.0f; // --presplit-budget F; likewise
+    float spatialMinGain = -1.0f; // --spatial-min-gain F; likewise
     std::string embreeIsa;        // --embree-isa NAME; empty: Embree's own choice
 };
 

@@ -10,7 +10,9 @@
 #include "core/bvh/bvh_packet.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -310,18 +312,90 @@ TEST(BvhSpatialSplit, KeptOnlyWithinTheBudgetAndCheaperThanTheObjectSplitIfSampl
     choice.object.cost = 6.0f * 100.0f; // as if two unit boxes of 50 references
     choice.spatial.axis = 0;
     const uint32_t count = 100, budget = 10;
+    const float anyGain = 0.0f;
     // Two half boxes of 55: cost 4 * 110 = 440, 10 extra references.
-    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, halfBox, 55, halfBox));
-    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget - 1, 55, halfBox, 55, halfBox));
-    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 0, RecordBounds{}, 100, unitBox));
-    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 100, unitBox, 0, RecordBounds{}));
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, anyGain, 55, halfBox, 55, halfBox));
+    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget - 1, anyGain, 55, halfBox, 55, halfBox));
+    EXPECT_FALSE(
+        keepsSpatialSplit(choice, count, budget, anyGain, 0, RecordBounds{}, 100, unitBox));
+    EXPECT_FALSE(
+        keepsSpatialSplit(choice, count, budget, anyGain, 100, unitBox, 0, RecordBounds{}));
     // Two unit boxes of 55 cost 660, more than the object split: kept only if not sampled.
-    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, unitBox, 55, unitBox));
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, anyGain, 55, unitBox, 55, unitBox));
     choice.spatial.sampled = true;
-    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 55, unitBox, 55, unitBox));
-    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, halfBox, 55, halfBox));
+    EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, anyGain, 55, unitBox, 55, unitBox));
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, anyGain, 55, halfBox, 55, halfBox));
     choice.object.axis = -1; // no object split to compare with
-    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 55, unitBox, 55, unitBox));
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, anyGain, 55, unitBox, 55, unitBox));
+}
+
+// With a least gain a reference, a split is kept where it lowers the object split's SAH cost by
+// at least that many times the fraction of references it adds, sampled or not. Two half boxes
+// of 55 references against 100 in the object split's: the cost falls by (600 - 440) / 600 =
+// 26.7% for 10% more references, a gain of 2.67 a reference.
+TEST(BvhSpatialSplit, KeptOnlyWhereTheCostFallsEnoughForTheReferencesAdded) {
+    RecordBounds halfBox; // surface area 4
+    halfBox.add(_mm_setr_ps(0.0f, 0.0f, 0.0f, 0.0f), _mm_setr_ps(0.5f, 1.0f, 1.0f, 0.0f));
+    SplitChoice choice;
+    choice.object.axis = 0;
+    choice.object.cost = 6.0f * 100.0f;
+    choice.spatial.axis = 0;
+    const uint32_t count = 100, budget = 40;
+    for (const bool sampled : {false, true}) {
+        SCOPED_TRACE(sampled ? "sampled" : "not sampled");
+        choice.spatial.sampled = sampled;
+        EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 0.5f, 55, halfBox, 55, halfBox));
+        EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 2.6f, 55, halfBox, 55, halfBox));
+        EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 2.7f, 55, halfBox, 55, halfBox));
+        // 64 a side: (600 - 512) / 600 = 14.7% for 28% more, a gain of 0.52 a reference.
+        EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 0.5f, 64, halfBox, 64, halfBox));
+        EXPECT_FALSE(keepsSpatialSplit(choice, count, budget, 0.55f, 64, halfBox, 64, halfBox));
+    }
+    choice.object.axis = -1; // no object split to compare with
+    EXPECT_TRUE(keepsSpatialSplit(choice, count, budget, 100.0f, 64, halfBox, 64, halfBox));
+}
+
+// Long thin triangles in every direction, as in scripts/outside_meshes.py's "sticks": every
+// node's triangles reach across it, so spatial splits near the top cut about a tenth of the
+// references for a few percent of the SAH cost. Without a least gain they take the budget;
+// with the default one they are refused, while the room's wide quads (which cut few references
+// for much) are still split (SplitsLargeTrianglesWithinTheBudget), and the answers stay brute
+// force's.
+Scene makeSticks(int count, uint32_t seed) {
+    Scene scene;
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> normal;
+    std::uniform_real_distribution<float> inCube(-5.0f, 5.0f), length(2.0f, 8.0f);
+    while (scene.triangles.size() < static_cast<std::size_t>(count)) {
+        const glm::vec3 d = glm::normalize(glm::vec3(normal(rng), normal(rng), normal(rng)));
+        const glm::vec3 a(inCube(rng), inCube(rng), inCube(rng));
+        const glm::vec3 b = a + length(rng) * d;
+        if (glm::any(glm::greaterThan(glm::abs(b), glm::vec3(5.0f)))) {
+            continue; // both ends in the cube
+        }
+        glm::vec3 leastAxis(0.0f); // of d's: never parallel to d
+        const glm::vec3 m = glm::abs(d);
+        leastAxis[m.x <= m.y && m.x <= m.z ? 0 : (m.y <= m.z ? 1 : 2)] = 1.0f;
+        const glm::vec3 across = glm::normalize(glm::cross(d, leastAxis));
+        scene.triangles.push_back({a, b, 0.5f * (a + b) + 0.02f * across, 0});
+    }
+    return scene;
+}
+
+TEST(BvhSpatialSplit, LeastGainRefusesSplitsThatAddManyReferencesForLittle) {
+    const Scene sticks = makeSticks(8000, 61);
+    BvhBuildOptions anyGain = spatialOnly(0.3f);
+    anyGain.spatialSplitMinGain = 0.0f;
+    const BvhBuildOptions byDefault = spatialOnly(0.3f);
+    const Bvh many = buildBvh(sticks, anyGain), few = buildBvh(sticks, byDefault);
+    const double triangles = static_cast<double>(sticks.triangles.size());
+    std::printf("sticks: %.3f references a triangle at any gain, %.3f by default\n",
+                static_cast<double>(many.leafReferences) / triangles,
+                static_cast<double>(few.leafReferences) / triangles);
+    EXPECT_GT(static_cast<double>(many.leafReferences), 1.05 * triangles);
+    EXPECT_LT(static_cast<double>(few.leafReferences), 1.02 * triangles);
+    EXPECT_LT(few.memoryBytes(), many.memoryBytes());
+    EXPECT_GT(expectMatchesBruteForce(sticks, few, makeRandomRays(2000, 62)), 200);
 }
 
 // binOverreach, the test for trying spatial splits at all: about 0 where references are small

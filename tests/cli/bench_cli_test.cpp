@@ -348,7 +348,7 @@ TEST(BenchCli, BadBenchFlagsGiveOneLineAndExitCode2) {
     for (const char* args :
          {"--workload sideways", "--workload", "--workload=", "--embree-isa avx9", "--embree-isa",
           "--embree-isa=AVX2", "--spatial-budget -1", "--spatial-budget 1.5", "--presplit-budget=x",
-          "--scalar=1"}) {
+          "--spatial-min-gain -0.5", "--spatial-min-gain=nan", "--scalar=1"}) {
         SCOPED_TRACE(args);
         const Outcome r = runBench("", std::string("--width 16 --height 16 --frames 1 ") + args,
                                    /*captureErr=*/true);

@@ -324,7 +324,7 @@ TEST(CommandLine, TheBenchsOwnOptionsAndDefaults) {
     const Parsed given =
         parse({"--workload", "bounce", "--scalar", "--no-packets", "--no-blocks", "--no-passes",
                "--no-embree", "--spatial-budget=0", "--presplit-budget", "0.25", "--embree-isa",
-               "avx2", "--height", "90"},
+               "avx2", "--height", "90", "--spatial-min-gain", "1.5"},
               Program::Bench);
     ASSERT_EQ(given.code, 0) << given.error;
     const BenchOptions& b = given.line.bench;
@@ -332,6 +332,7 @@ TEST(CommandLine, TheBenchsOwnOptionsAndDefaults) {
                 b.noEmbree);
     EXPECT_EQ(b.spatialBudget, 0.0f);
     EXPECT_EQ(b.presplitBudget, 0.25f);
+    EXPECT_EQ(b.spatialMinGain, 1.5f);
     EXPECT_EQ(b.embreeIsa, "avx2");
     EXPECT_EQ(given.line.settings.height, 90);
     EXPECT_EQ(given.line.settings.width, RenderSettings{}.width);

@@ -283,6 +283,8 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         context.slack = slack;
         context.minOverlapArea = options.spatialSplitOverlap * root.bounds.box.toAabb().area();
         context.minNodeOverlap = options.spatialSplitNodeOverlap;
+        context.minGainPerReference = // negative or NaN: 0
+            options.spatialSplitMinGain > 0.0f ? options.spatialSplitMinGain : 0.0f;
     }
     const SubtreeBuilder builder(options, context);
     const std::size_t total = records.size();

@@ -43,6 +43,19 @@ template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, co
     team->forEach(count, job);
 }
 
+// Whether a spatial split of SAH cost `cost` that makes `references` of a node's `count` lowers
+// the cost of the node's object split by at least minGain times the fraction of references it
+// adds (BvhBuildOptions::spatialSplitMinGain).
+bool gainsEnough(const ObjectSplit& object, float cost, uint32_t count, std::size_t references,
+                 float minGain) {
+    if (object.axis < 0 || !(minGain > 0.0f)) {
+        return true; // nothing to gain over, or no gain asked for
+    }
+    const double gain = static_cast<double>(object.cost) - cost;
+    const double added = static_cast<double>(references) - count;
+    return gain * count >= static_cast<double>(minGain) * object.cost * added;
+}
+
 } // namespace
 
 SubtreeBuilder::SubtreeBuilder(const BvhBuildOptions& options, const BuildContext& context)
@@ -126,7 +139,9 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
                 static_cast<double>(count), std::round(choice.spatial.references * toNode)));
             choice.spatial.sampled = true;
         }
-        if (choice.spatial.cost < bestCost && choice.spatial.references - count <= splitBudget) {
+        if (choice.spatial.cost < bestCost && choice.spatial.references - count <= splitBudget &&
+            gainsEnough(choice.object, choice.spatial.cost, count, choice.spatial.references,
+                        context_.minGainPerReference)) {
             bestCost = choice.spatial.cost;
         } else {
             choice.spatial.axis = -1;
@@ -175,8 +190,9 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
             const SpatialSides made = applySpatialSplit(
                 *context_.scene, task.first, task.first + task.count, choice.spatial,
                 context_.slack, task.spare, rights.data(), left.bounds, right.bounds);
-            if (keepsSpatialSplit(choice, task.count, task.splitBudget, made.left, left.bounds,
-                                  made.right, right.bounds)) {
+            if (keepsSpatialSplit(choice, task.count, task.splitBudget,
+                                  context_.minGainPerReference, made.left, left.bounds, made.right,
+                                  right.bounds)) {
                 placeChildren(task, made.left, made.right, task.spare, task.first, left, right);
                 std::copy_n(rights.data(), made.right, right.first);
             } else {
@@ -202,17 +218,22 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
 }
 
 bool keepsSpatialSplit(const SplitChoice& choice, uint32_t count, uint32_t splitBudget,
-                       std::size_t leftSize, const RecordBounds& leftBounds, std::size_t rightSize,
+                       float minGainPerReference, std::size_t leftSize,
+                       const RecordBounds& leftBounds, std::size_t rightSize,
                        const RecordBounds& rightBounds) {
     if (leftSize == 0 || rightSize == 0 || leftSize + rightSize - count > splitBudget) {
         return false;
     }
-    if (!choice.spatial.sampled || choice.object.axis < 0) {
-        return true; // the bins' cost is an upper bound of the split's (bvh_spatial_split.h)
+    if (choice.object.axis < 0) {
+        return true; // no object split to compare with
     }
     const float cost = leftBounds.box.toAabb().area() * static_cast<float>(leftSize) +
                        rightBounds.box.toAabb().area() * static_cast<float>(rightSize);
-    return cost < choice.object.cost;
+    // Unsampled, the bins' cost is an upper bound of the split's (bvh_spatial_split.h).
+    if (choice.spatial.sampled && !(cost < choice.object.cost)) {
+        return false;
+    }
+    return gainsEnough(choice.object, cost, count, leftSize + rightSize, minGainPerReference);
 }
 
 void Subtree::addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count) {

@@ -45,10 +45,11 @@ void splitAtMedian(const BuildTask& task, BuildTask& left, BuildTask& right);
 
 // What the build needs besides the references.
 struct BuildContext {
-    const Scene* scene = nullptr; // null: no spatial splits
-    float slack = 0.0f;           // splitBox's (bvh_clip.h)
-    float minOverlapArea = 0.0f;  // spatial splits only where object splits overlap more
-    float minNodeOverlap = 0.0f;  // ... and more than this fraction of the node's own surface
+    const Scene* scene = nullptr;     // null: no spatial splits
+    float slack = 0.0f;               // splitBox's (bvh_clip.h)
+    float minOverlapArea = 0.0f;      // spatial splits only where object splits overlap more
+    float minNodeOverlap = 0.0f;      // ... and more than this fraction of the node's own surface
+    float minGainPerReference = 0.0f; // BvhBuildOptions::spatialSplitMinGain
     // Nodes of at most this many references become leaves straight away, unbinned, whatever
     // BvhBuildOptions::maxLeafSize says (0: none): the collapse makes every such binary subtree
     // one wide leaf anyway (kLeafMerge, bvh_collapse.h).
@@ -82,10 +83,13 @@ struct SplitChoice {
 
 // Whether a spatial split that made leftSize and rightSize references (with these bounds) of a
 // node's `count` is kept, as choose() meant it: both sides hold references, the extra ones fit
-// the node's budget, and a split chosen from a sample (SpatialSplit::sampled) is cheaper by the
-// SAH than the node's object split. Otherwise the node takes choice.fallback.
+// the node's budget, a split chosen from a sample (SpatialSplit::sampled) is cheaper by the SAH
+// than the node's object split, and the split lowers that cost by at least minGainPerReference
+// times the fraction of references it adds (BvhBuildOptions::spatialSplitMinGain). Otherwise
+// the node takes choice.fallback.
 bool keepsSpatialSplit(const SplitChoice& choice, uint32_t count, uint32_t splitBudget,
-                       std::size_t leftSize, const RecordBounds& leftBounds, std::size_t rightSize,
+                       float minGainPerReference, std::size_t leftSize,
+                       const RecordBounds& leftBounds, std::size_t rightSize,
                        const RecordBounds& rightBounds);
 
 class SubtreeBuilder {

@@ -59,8 +59,8 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
                 left.bounds.merge(leftBounds[i]);
                 right.bounds.merge(rightBounds[i]);
             }
-            if (keepsSpatialSplit(choice, count, task.splitBudget, leftSize, left.bounds, rightSize,
-                                  right.bounds)) {
+            if (keepsSpatialSplit(choice, count, task.splitBudget, context_.minGainPerReference,
+                                  leftSize, left.bounds, rightSize, right.bounds)) {
                 // Each side in chunk order to its room in the parent's spare room; the chunks'
                 // parts are copied on the team.
                 placeChildren(task, leftSize, rightSize, task.spare, task.first, left, right);
