@@ -166,10 +166,46 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     return choice;
 }
 
+SplitKind SubtreeBuilder::splitNode(const BuildTask& task, BinSet& scratch, RecordVector& rights,
+                                    BuildTask& left, BuildTask& right) const {
+    std::vector<BinSet> noChunks; // never allocated: no team
+    const SplitChoice choice = choose(task.first, task.count, task.bounds, task.depth,
+                                      task.splitBudget, nullptr, scratch, noChunks);
+    SplitKind kind = choice.kind;
+    if (kind == SplitKind::Spatial) {
+        // The left side straight into the spare room, the right side aside: where it goes
+        // depends on the left side's size, and the split may yet fall back.
+        if (rights.size() < task.count) {
+            rights.resize(task.count);
+        }
+        const SpatialSides made =
+            applySpatialSplit(*context_.scene, task.first, task.first + task.count, choice.spatial,
+                              context_.slack, task.spare, rights.data(), left.bounds, right.bounds);
+        if (keepsSpatialSplit(choice, task.count, task.splitBudget, context_.minGainPerReference,
+                              made.left, left.bounds, made.right, right.bounds)) {
+            placeChildren(task, made.left, made.right, task.spare, task.first, left, right);
+            std::copy_n(rights.data(), made.right, right.first);
+            return kind;
+        }
+        kind = choice.fallback;
+        left.bounds = right.bounds = RecordBounds{};
+    }
+    if (kind == SplitKind::Object) {
+        // Into the spare room, which the children then own as their references; the parent's
+        // room becomes their spare.
+        placeChildren(task, choice.object.leftCount, task.count - choice.object.leftCount,
+                      task.spare, task.first, left, right);
+        partitionRecords(task.first, task.first + task.count, choice.object, left.first,
+                         right.first, left.bounds, right.bounds);
+    } else if (kind == SplitKind::Median) {
+        splitAtMedian(task, left, right);
+    }
+    return kind;
+}
+
 void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
     std::vector<BuildTask> stack{root};
     BinSet scratch;
-    std::vector<BinSet> noChunks;
     RecordVector rights; // a spatial split's right side, until it is kept
     while (!stack.empty()) {
         const BuildTask task = stack.back();
@@ -177,39 +213,8 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         const Aabb box = task.bounds.box.toAabb();
         out.nodes[task.slot].lower = box.lower;
         out.nodes[task.slot].upper = box.upper;
-        const SplitChoice choice = choose(task.first, task.count, task.bounds, task.depth,
-                                          task.splitBudget, nullptr, scratch, noChunks);
         BuildTask left, right;
-        SplitKind kind = choice.kind;
-        if (kind == SplitKind::Spatial) {
-            // The left side straight into the spare room, the right side aside: where it goes
-            // depends on the left side's size, and the split may yet fall back.
-            if (rights.size() < task.count) {
-                rights.resize(task.count);
-            }
-            const SpatialSides made = applySpatialSplit(
-                *context_.scene, task.first, task.first + task.count, choice.spatial,
-                context_.slack, task.spare, rights.data(), left.bounds, right.bounds);
-            if (keepsSpatialSplit(choice, task.count, task.splitBudget,
-                                  context_.minGainPerReference, made.left, left.bounds, made.right,
-                                  right.bounds)) {
-                placeChildren(task, made.left, made.right, task.spare, task.first, left, right);
-                std::copy_n(rights.data(), made.right, right.first);
-            } else {
-                kind = choice.fallback;
-                left.bounds = right.bounds = RecordBounds{};
-            }
-        }
-        if (kind == SplitKind::Object) {
-            // Into the spare room, which the children then own as their references; the
-            // parent's room becomes their spare.
-            placeChildren(task, choice.object.leftCount, task.count - choice.object.leftCount,
-                          task.spare, task.first, left, right);
-            partitionRecords(task.first, task.first + task.count, choice.object, left.first,
-                             right.first, left.bounds, right.bounds);
-        } else if (kind == SplitKind::Median) {
-            splitAtMedian(task, left, right);
-        } else if (kind == SplitKind::Leaf) {
+        if (splitNode(task, scratch, rights, left, right) == SplitKind::Leaf) {
             out.addLeaf(task.slot, task.first, task.count);
             continue;
         }

@@ -99,12 +99,13 @@ public:
     // Both build the subtree of `root` into out: root at out.nodes[root.slot], the two children
     // of a split appended as a pair, the left child's subtree before the right one's.
 
-    // The top of the tree, on the team (bvh_build_top.cpp): nodes of more than `deferBelow`
-    // references are split with the team's threads, their references cut into chunks whose
-    // size depends only on their count, bins merged and children written in chunk order (to
-    // the parent's spare room: the two ranges swap roles at each level); nodes of at most
-    // `deferBelow` references that must split are appended to `deferred` instead, their
-    // references left where they are. The result does not depend on the team's size.
+    // The top of the tree, on the team (bvh_build_top.cpp), depth first: nodes of more than
+    // `deferBelow` references are split, the large ones one at a time with the team's threads
+    // (splitOnTeam), the others in batches, several at a time, each on one thread (splitNode),
+    // their children taking their slots in the batch's order. Nodes of at most `deferBelow`
+    // references that must split are appended to `deferred` instead, their references left
+    // where they are. Which way a node is split and the batches depend only on the counts, so
+    // the result does not depend on the team's size.
     void buildTop(Subtree& out, BuildTask root, BuildTeam& team, std::size_t deferBelow,
                   std::vector<BuildTask>& deferred) const;
 
@@ -120,6 +121,17 @@ private:
     SplitChoice choose(const PrimRecord* first, uint32_t count, const RecordBounds& bounds,
                        int depth, uint32_t splitBudget, BuildTeam* team, BinSet& scratch,
                        std::vector<BinSet>& chunkBins) const;
+
+    // Splits the node of `task` on this thread, as choose() chose: returns the kind of split
+    // made and fills left and right, placed in the node's two ranges (placeChildren); Leaf: the
+    // node stays a leaf. `scratch` as choose() takes it; `rights` holds a spatial split's right
+    // side until the split is kept.
+    SplitKind splitNode(const BuildTask& task, BinSet& scratch, RecordVector& rights,
+                        BuildTask& left, BuildTask& right) const;
+    // The same with the team: the node's references cut into chunks whose size depends only on
+    // their count (BuildChunks), bins merged and children written in chunk order.
+    SplitKind splitOnTeam(const BuildTask& task, BuildTeam& team, BinSet& scratch,
+                          std::vector<BinSet>& chunkBins, BuildTask& left, BuildTask& right) const;
 
     int maxLeaf_;
     int bins_;
