@@ -2,10 +2,10 @@
 //
 // Every valid triangle becomes a primitive record (its box and scene index); pre-splitting may
 // add references (bvh_presplit.h). Nodes are split as bvh_build_subtree.h describes. The top of
-// the tree, down to subtrees of a size that depends only on the triangle count, is built one
-// node at a time with every thread binning and partitioning its own chunks of the node's
-// references; those subtrees are then built in parallel, each into its own arrays with its
-// leaves in depth-first order, and assembled in a fixed order, so the result is the same
+// the tree, down to subtrees of a size that depends only on the triangle count, is built on
+// all threads (its large nodes each by chunks on every thread, its smaller ones several at a
+// time: bvh_build_top.cpp); those subtrees are then built in parallel, each into its own arrays
+// with its leaves in depth-first order, and assembled in a fixed order, so the result is the same
 // whatever the thread count.
 
 #include "bvh/build/bvh_binning.h"
@@ -298,7 +298,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     root.first = records.data();
     root.spare = spare.data();
 
-    // The top, one node at a time on the whole team.
+    // The top, on the whole team.
     Subtree top;
     top.nodes.resize(1);
     std::vector<BuildTask> deferred;
