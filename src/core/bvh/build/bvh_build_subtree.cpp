@@ -44,12 +44,12 @@ template <typename Job> void forEachChunk(std::size_t count, BuildTeam* team, co
 }
 
 // Whether a spatial split of SAH cost `cost` that makes `references` of a node's `count` lowers
-// the cost of the node's object split by at least minGain times the fraction of references it
-// adds (BvhBuildOptions::spatialSplitMinGain).
+// the cost of the node's object split (which must exist) by at least minGain times the
+// fraction of references it adds (BvhBuildOptions::spatialSplitMinGain).
 bool gainsEnough(const ObjectSplit& object, float cost, uint32_t count, std::size_t references,
                  float minGain) {
-    if (object.axis < 0 || !(minGain > 0.0f)) {
-        return true; // nothing to gain over, or no gain asked for
+    if (!(minGain > 0.0f)) {
+        return true; // no gain asked for
     }
     const double gain = static_cast<double>(object.cost) - cost;
     const double added = static_cast<double>(references) - count;
