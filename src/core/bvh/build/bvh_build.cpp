@@ -33,12 +33,13 @@ constexpr std::size_t kBoundsChunk = 65536; // records per chunk of the root's b
 constexpr std::size_t kRecordChunk = 16384; // triangles per chunk of makeRecords
 
 // One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
-// box of the valid triangles and the widest of them on each axis (upper - lower, world units).
+// records' bounds (as boundsOf would) and the widest triangle on each axis (upper - lower, world
+// units).
 // Chunk c writes its records from c * kRecordChunk on, in the array itself; only where
 // triangles were skipped do later chunks move down after. The array has capacity for
 // `extraRoom` times as many records more.
 RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, std::size_t& skipped,
-                         Aabb& box, glm::vec3& widest) {
+                         RecordBounds& bounds, glm::vec3& widest) {
     const std::size_t triangles = scene.triangles.size();
     const std::size_t chunks = (triangles + kRecordChunk - 1) / kRecordChunk;
     RecordVector records;
@@ -47,16 +48,14 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
     records.resize(triangles);
     struct ChunkFacts { // one chunk's, accumulated in registers and stored once
         std::size_t made = 0;
-        Aabb box;
+        RecordBounds bounds;
         glm::vec3 widest{0.0f};
     };
     std::vector<ChunkFacts> facts(chunks);
     team.forEach(chunks, [&](std::size_t c) {
         PrimRecord* out = records.data() + c * kRecordChunk;
         std::size_t made = 0;
-        // In SSE2 lanes, each minimum and maximum taken as glm::min(a, b) and glm::max(a, b)
-        // take it (_mm_min_ps(b, a): the same zeros' signs), so the same records and facts.
-        SseBox chunkBox;
+        RecordBounds chunkBounds;
         __m128 chunkWidest = _mm_setzero_ps();
         for (std::size_t i = c * kRecordChunk; i < std::min(triangles, (c + 1) * kRecordChunk);
              ++i) {
@@ -67,21 +66,19 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
             const __m128 lower = _mm_min_ps(_mm_min_ps(t.v2, t.v1), t.v0);
             const __m128 upper = _mm_max_ps(_mm_max_ps(t.v2, t.v1), t.v0);
             chunkWidest = _mm_max_ps(_mm_sub_ps(upper, lower), chunkWidest);
-            for (const __m128 corner : {lower, upper}) { // Aabb::extend, corner by corner
-                chunkBox.lower = _mm_min_ps(corner, chunkBox.lower);
-                chunkBox.upper = _mm_max_ps(corner, chunkBox.upper);
-            }
             // The record: lane 3 of the lower corner the scene index, of the upper one 0 (as
             // TriangleLanes' lanes 3 are).
             const __m128 index =
                 _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128(static_cast<int>(i)), 12));
-            _mm_storeu_ps(&out[made].lower.x, _mm_or_ps(lower, index));
+            const __m128 recordLower = _mm_or_ps(lower, index);
+            _mm_storeu_ps(&out[made].lower.x, recordLower);
             _mm_storeu_ps(&out[made].upper.x, upper);
+            chunkBounds.add(recordLower, upper); // as RecordBounds::add(out[made])
             ++made;
         }
         alignas(16) float w[4];
         _mm_store_ps(w, chunkWidest);
-        facts[c] = ChunkFacts{made, chunkBox.toAabb(), glm::vec3(w[0], w[1], w[2])};
+        facts[c] = ChunkFacts{made, chunkBounds, glm::vec3(w[0], w[1], w[2])};
     });
     std::size_t at = 0;
     for (std::size_t c = 0; c < chunks; ++c) {
@@ -91,7 +88,7 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
         }
         at += facts[c].made;
         widest = glm::max(widest, facts[c].widest);
-        box.extend(facts[c].box);
+        bounds.merge(facts[c].bounds); // in chunk order, as boundsOnTeam merges
     }
     skipped = triangles - at;
     records.resize(at);
@@ -202,17 +199,19 @@ BvhNode padded(BvhNode node, float pad) {
     return node;
 }
 
-// Fills bvh.nodes from the top and its subtrees, and the leaves' triangles (bvh.triangles, or
-// only their scene indices in `sceneIndices` when `indicesOnly`), subtrees on the team.
+// Fills bvh.nodes from the top and its subtrees, and the leaves' triangles (bvh.triangles, or,
+// when `forWide`, only their scene indices in `sceneIndices` and each node's span of them in
+// `spans`, as the 8-wide form wants them), subtrees on the team.
 void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTask>& deferred,
-              const std::vector<Subtree>& subtrees, float pad, bool indicesOnly, BuildTeam& team,
-              Bvh& bvh, std::vector<uint32_t>& sceneIndices) {
+              const std::vector<Subtree>& subtrees, float pad, bool forWide, BuildTeam& team,
+              Bvh& bvh, std::vector<uint32_t>& sceneIndices, std::vector<LeafSpan>& spans) {
     const Layout layout = layOut(top, deferred, subtrees);
     bvh.nodes.resize(layout.nodes);
     LeafOutput out;
-    if (indicesOnly) {
+    if (forWide) {
         sceneIndices.resize(layout.records);
         out.sceneIndices = sceneIndices.data();
+        spans.resize(layout.nodes);
     } else {
         bvh.triangles.resize(layout.records);
         out.triangles = bvh.triangles.data();
@@ -235,7 +234,14 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
             bvh.nodes[k == 0 ? deferred[i].slot : nodeOffset + k] = padded(node, pad);
         }
         writeLeaves(scene, sub.leafTriangles.data(), sub.leafTriangles.size(), recordOffset, out);
+        if (forWide) { // its nodes but the root, which lies among the top's
+            spanBinaryNodes(bvh.nodes.data(), nodeOffset + 1, nodeOffset + sub.nodes.size(),
+                            spans.data());
+        }
     });
+    if (forWide) {
+        spanBinaryNodes(bvh.nodes.data(), 0, top.nodes.size(), spans.data());
+    }
     bvh.leafReferences = layout.records;
 }
 
@@ -246,16 +252,17 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     // A scene smaller than one subtree task gains nothing from more threads than one.
     BuildTeam team(scene.triangles.size() < 2 * kMinTaskSize ? 1
                                                              : resolveThreadCount(options.threads));
-    Aabb sceneBox;                  // of the valid triangles
+    RecordBounds recordBounds;      // of the records of the valid triangles
     glm::vec3 widestTriangle{0.0f}; // on each axis, before pre-splitting
     // Spatial splits add at most this fraction of references (BvhBuildOptions; NaN: none).
     const float spatialBudget =
         options.spatialSplitBudget > 0.0f ? std::min(options.spatialSplitBudget, 1.0f) : 0.0f;
     RecordVector records =
-        makeRecords(scene, spatialBudget, team, bvh.skippedTriangles, sceneBox, widestTriangle);
+        makeRecords(scene, spatialBudget, team, bvh.skippedTriangles, recordBounds, widestTriangle);
     if (records.empty()) {
         return bvh;
     }
+    const Aabb sceneBox = recordBounds.box.toAabb(); // of the valid triangles
     // The largest |coordinate| of a valid vertex.
     const glm::vec3 farthest = glm::max(glm::abs(sceneBox.lower), glm::abs(sceneBox.upper));
     const float magnitude = std::max({farthest.x, farthest.y, farthest.z});
@@ -268,11 +275,11 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     bvh.boxPad = pad;
     bvh.largestCoordinate = magnitude;
     const bool splitsMayPay = hasTriangleWiderThanASpatialBin(widestTriangle, sceneBox);
-    if (splitsMayPay) {
-        presplitRecords(scene, options.presplitBudget, slack, team, records);
-    }
     BuildTask root;
-    root.bounds = boundsOnTeam(records, team);
+    root.bounds = recordBounds;
+    if (splitsMayPay && presplitRecords(scene, options.presplitBudget, slack, team, records)) {
+        root.bounds = boundsOnTeam(records, team);
+    }
     const bool wide = options.simd && bvhSimdSupported();
     BuildContext context;
     if (wide && !options.keepBinaryNodes) {
@@ -325,9 +332,10 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         subtrees[i] = std::move(subtree);
     });
     std::vector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
-    assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices);
+    std::vector<LeafSpan> spans;        // of the binary nodes, for the 8-wide form
+    assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices, spans);
     subtrees = {};
-    if (wide && !buildWideBvh(bvh, scene, sceneIndices, options.keepBinaryNodes, team)) {
+    if (wide && !buildWideBvh(bvh, scene, sceneIndices, spans, options.keepBinaryNodes, team)) {
         // The tree does not fit the wide form: the binary form keeps its own triangles.
         bvh.triangles.resize(sceneIndices.size());
         for (std::size_t i = 0; i < sceneIndices.size(); ++i) {

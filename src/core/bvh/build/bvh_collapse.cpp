@@ -32,10 +32,6 @@ namespace {
 
 constexpr uint32_t kMinPartTriangles = 2048; // smallest wide subtree made as a parallel task
 
-struct Range {
-    uint32_t first = 0, count = 0; // the subtree's triangles [first, first + count)
-};
-
 float area(const BvhNode& n) { return Aabb{n.lower, n.upper}.area(); }
 
 // A wide subtree waiting to be made: the binary node it stands for, and where it hangs.
@@ -50,7 +46,7 @@ struct PendingPart {
 // [lane, lane + triangles.count) counted from the start of the part's block `block` (running on
 // into the next block past lane 7).
 struct LeafPlacement {
-    Range triangles;
+    LeafSpan triangles;
     uint32_t node = 0; // in the part's nodes
     uint32_t slot = 0;
     uint32_t block = 0; // in the part's blocks
@@ -75,31 +71,17 @@ struct BinaryTree {
     const Bvh& bvh;
     const Scene& scene;
     const std::vector<uint32_t>& leafScene; // leaf triangle -> scene triangle
-    std::vector<Range> ranges;              // per binary node
+    const std::vector<LeafSpan>& spans;     // per binary node
     // Leaf triangle -> its lane in the BVH's blocks; empty when the binary leaves are not to
     // be pointed at the blocks.
     std::vector<uint32_t> slotOf;
-    std::vector<bool> leaf; // per binary node: it becomes one wide leaf
 
-    BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves, bool slots)
-        : bvh(b), scene(s), leafScene(leaves), ranges(b.nodes.size()),
-          slotOf(slots ? leaves.size() : 0), leaf(b.nodes.size()) {
-        // Children always follow their parent, so a backwards pass sees children first.
-        for (std::size_t i = b.nodes.size(); i-- > 0;) {
-            const BvhNode& n = b.nodes[i];
-            if (n.isLeaf()) {
-                ranges[i] = {n.index, n.count};
-                leaf[i] = true;
-            } else {
-                const uint32_t l = n.index, r = n.index + 1;
-                ranges[i] = {ranges[l].first, ranges[l].count + ranges[r].count};
-                leaf[i] = ranges[i].count <= kLeafMerge ||
-                          (ranges[l].count <= kLeafMerge && ranges[r].count <= kLeafMerge);
-            }
-        }
+    BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves,
+               const std::vector<LeafSpan>& nodeSpans, bool slots)
+        : bvh(b), scene(s), leafScene(leaves), spans(nodeSpans), slotOf(slots ? leaves.size() : 0) {
     }
 
-    bool opens(uint32_t binary) const { return !leaf[binary]; }
+    bool opens(uint32_t binary) const { return spans[binary].opens; }
 };
 
 class Collapser {
@@ -171,7 +153,7 @@ private:
         // halves whose boxes it enters, and the halves pack into blocks with other leaves.
         auto splits = [&](uint32_t binary) {
             return !tree_.opens(binary) && !node(binary).isLeaf() &&
-                   tree_.ranges[binary].count > kLeafMerge;
+                   tree_.spans[binary].count > kLeafMerge;
         };
         while (count < kWideLanes) {
             int best = -1;
@@ -205,10 +187,10 @@ private:
                 wide.upper[a][s] = b.upper[a];
             }
             if (!tree_.opens(slots[s])) {
-                part_.leaves.push_back({tree_.ranges[slots[s]], p.wide, static_cast<uint32_t>(s)});
+                part_.leaves.push_back({tree_.spans[slots[s]], p.wide, static_cast<uint32_t>(s)});
                 continue;
             }
-            if (deferBelow_ > 0 && tree_.ranges[slots[s]].count <= deferBelow_) {
+            if (deferBelow_ > 0 && tree_.spans[slots[s]].count <= deferBelow_) {
                 deferred_->push_back({slots[s], p.wide, s, p.depth + 1});
                 continue;
             }
@@ -320,14 +302,29 @@ void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* block
 
 } // namespace
 
+void spanBinaryNodes(const BvhNode* nodes, std::size_t first, std::size_t last, LeafSpan* spans) {
+    for (std::size_t i = last; i-- > first;) { // children before their parent
+        const BvhNode& n = nodes[i];
+        if (n.isLeaf()) {
+            spans[i] = {n.index, n.count, false};
+        } else {
+            const LeafSpan &left = spans[n.index], &right = spans[n.index + 1];
+            const uint32_t count = left.count + right.count;
+            spans[i] = {left.first, count,
+                        count > kLeafMerge &&
+                            (left.count > kLeafMerge || right.count > kLeafMerge)};
+        }
+    }
+}
+
 bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
-                  bool pointBinaryLeaves, BuildTeam& team) {
+                  const std::vector<LeafSpan>& spans, bool pointBinaryLeaves, BuildTeam& team) {
     bvh.wideNodes.clear();
     bvh.triangleBlocks.clear();
     if (bvh.nodes.empty()) {
         return false;
     }
-    BinaryTree tree(bvh, scene, leafScene, pointBinaryLeaves);
+    BinaryTree tree(bvh, scene, leafScene, spans, pointBinaryLeaves);
     WidePart top;
     std::vector<PendingPart> pending;
     const uint32_t deferBelow =

@@ -4,6 +4,7 @@
 #include "bvh/build/bvh_build_team.h"
 #include "bvh/bvh.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -18,14 +19,27 @@ inline constexpr int kWideStackSize = 512;
 // (bvh_build_subtree.h): splitting them would only reorder the lanes of that leaf.
 inline constexpr uint32_t kLeafMerge = 8;
 
+// The leaf triangles under a binary node: [first, first + count) in leaf order (a node's leaves
+// hold consecutive leaf triangles, depth first); and whether the collapse opens the node into
+// its children (if not, the node becomes one wide leaf).
+struct LeafSpan {
+    uint32_t first = 0, count = 0;
+    bool opens = false;
+};
+
+// Fills spans[i] for the binary nodes i in [first, last), which the caller may run for disjoint
+// ranges on several threads. Children always follow their parent; a child of a node in the range
+// either lies in it or has its span filled already.
+void spanBinaryNodes(const BvhNode* nodes, std::size_t first, std::size_t last, LeafSpan* spans);
+
 // Fills bvh.wideNodes and bvh.triangleBlocks from bvh.nodes, whose leaves hold leaf triangles
-// [index, index + count), leaf triangle i being scene.triangles[leafScene[i]]; then, with
-// `pointBinaryLeaves` (for a BVH that keeps its binary nodes), points the binary leaves at the
-// blocks' lanes (see Bvh::triangles), and returns true. Returns false, with the wide form empty
-// and bvh.nodes unchanged, when the tree does not fit the wide form. The top of the wide tree is
-// made on the calling thread, its subtrees on the team; the result does not depend on the
-// team's size.
+// [index, index + count), leaf triangle i being scene.triangles[leafScene[i]], and whose spans
+// (spanBinaryNodes) are `spans`; then, with `pointBinaryLeaves` (for a BVH that keeps its binary
+// nodes), points the binary leaves at the blocks' lanes (see Bvh::triangles), and returns true.
+// Returns false, with the wide form empty and bvh.nodes unchanged, when the tree does not fit
+// the wide form. The top of the wide tree is made on the calling thread, its subtrees on the
+// team; the result does not depend on the team's size.
 bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
-                  bool pointBinaryLeaves, BuildTeam& team);
+                  const std::vector<LeafSpan>& spans, bool pointBinaryLeaves, BuildTeam& team);
 
 } // namespace raylab

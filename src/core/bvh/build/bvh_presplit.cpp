@@ -56,10 +56,10 @@ void splitTriangle(const Triangle& t, uint32_t index, const Aabb& box, uint32_t 
 
 } // namespace
 
-void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& team,
+bool presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& team,
                      RecordVector& records) {
     if (records.empty() || !(budget > 0.0f)) {
-        return;
+        return false;
     }
     // Chunks of a fixed size: their partial sums are added in chunk order, and their outputs
     // concatenated in chunk order, whatever thread made them.
@@ -82,7 +82,7 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
         total += p;
     }
     if (!(total > 0.0)) {
-        return;
+        return false;
     }
     const double scale = static_cast<double>(budget) * static_cast<double>(records.size()) / total;
     std::vector<RecordVector> outs(chunks);
@@ -112,6 +112,7 @@ void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& t
         RecordVector().swap(outs[c]);
     });
     records.swap(all);
+    return true;
 }
 
 } // namespace raylab

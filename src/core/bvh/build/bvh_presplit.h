@@ -20,8 +20,9 @@ namespace raylab {
 // Replaces records (one per valid triangle) by references: at most about budget * records.size()
 // extra ones, given to the triangles with the most box surface beyond their own area. `slack`
 // (world units) widens each split box to cover the rounding of the edge-plane intersections.
-// Deterministic: depends only on the triangles and the arguments, not on the team's size.
-void presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& team,
+// Deterministic: depends only on the triangles and the arguments, not on the team's size. Returns
+// whether it replaced the records (false: they are left as they were).
+bool presplitRecords(const Scene& scene, float budget, float slack, BuildTeam& team,
                      RecordVector& records);
 
 } // namespace raylab
