@@ -199,5 +199,41 @@ TEST(BvhLeafMerge, UnsplitLeavesMatchBruteForce) {
     expectMatchesBruteForce(scene, bvh, makeAxisAlignedRays(300, 1.5f, 26));
 }
 
+// The spans the collapse reads (bvh_collapse.h): filled range by range, as the build fills them
+// (each subtree's nodes on its own thread, then the top's), each node's leaf triangles are its
+// leaves' together, and a node opens into its children only when it holds more than kLeafMerge
+// triangles and so does one of its children.
+TEST(BvhLeafMerge, SpansOfBinaryNodesFilledRangeByRange) {
+    static_assert(kLeafMerge == 8, "the counts below are chosen around 8");
+    auto inner = [](uint32_t firstChild) {
+        BvhNode n;
+        n.index = firstChild;
+        n.count = 0;
+        return n;
+    };
+    auto leaf = [](uint32_t first, uint32_t count) {
+        BvhNode n;
+        n.index = first;
+        n.count = count;
+        return n;
+    };
+    // 0 -> (1, 2); 2 -> (3, 4); 3 -> (5, 6); the leaves hold 4 + 6 + 5 + 7 = 22 triangles.
+    const std::vector<BvhNode> nodes = {inner(1),    leaf(0, 4), inner(3),  inner(5),
+                                        leaf(16, 6), leaf(4, 5), leaf(9, 7)};
+    std::vector<LeafSpan> spans(nodes.size());
+    spanBinaryNodes(nodes.data(), 3, nodes.size(), spans.data()); // a subtree's nodes first
+    spanBinaryNodes(nodes.data(), 0, 3, spans.data());            // then those above them
+    const struct {
+        uint32_t first, count;
+        bool opens;
+    } expected[] = {{0, 22, true},  {0, 4, false}, {4, 18, true}, {4, 12, false},
+                    {16, 6, false}, {4, 5, false}, {9, 7, false}};
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        EXPECT_EQ(spans[i].first, expected[i].first) << "node " << i;
+        EXPECT_EQ(spans[i].count, expected[i].count) << "node " << i;
+        EXPECT_EQ(spans[i].opens, expected[i].opens) << "node " << i;
+    }
+}
+
 } // namespace
 } // namespace raylab::accel_test
