@@ -84,9 +84,10 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
     const bool cameraCandidates = closestHitBlock(
         bvh, camera, blocked.rect[block], &blocked.primary[first], count, &answers.hits[first]);
     bool shadowCandidates = false;
-    if (shadowFrustum) {
+    const bool shadows = blocked.blockShadowRays[block] != 0; // else occluded stays 0
+    if (shadows && shadowFrustum) {
         shadowCandidates = anyHitBlock(bvh, shadowRays, count, light, occluded);
-    } else {
+    } else if (shadows) {
         for (int k = 0; k < count; ++k) {
             occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;
         }
@@ -103,9 +104,13 @@ void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::si
     const RayPacket* shadowRays = &blocked.shadow[first];
     HitPacket* hits = &answers.hits[first];
     unsigned* occluded = &answers.occluded[first];
+    const bool shadows = blocked.blockShadowRays[block] != 0; // else occluded stays 0
     int k = 0;
     for (; k + 1 < count; k += 2) {
         closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
+        if (!shadows) {
+            continue;
+        }
         const unsigned both = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
                                   ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1])
                                   : 0u;
@@ -114,7 +119,9 @@ void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::si
     }
     if (k < count) {
         closestHit8(bvh, rays[k], hits[k]);
-        occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;
+        if (shadows) {
+            occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;
+        }
     }
 }
 

@@ -62,6 +62,13 @@ struct BlockAnswers {
 // Sized for `blocked`, so that tracing allocates nothing.
 BlockAnswers makeBlockAnswers(const BlockedRays& blocked);
 
+// traceBlock and traceBlockInPacketPairs trace a block's shadow rays only when it has any
+// (blockShadowRays): the packets of a block without one are never read, and its occluded entries
+// stay 0 (as makeBlockAnswers sets them), as Embree's packet sets hold no packet for a tile
+// without shadow rays (embree_packets.cpp). The renderer's blocks make their shadow packets in
+// registers and cache, where reading them back costs next to nothing; here they come from arrays
+// larger than the caches.
+
 // Traces block b as shadeLabBlock does: its camera rays (made by `camera`) through the frustum
 // of its image rectangle; shadow rays go through a frustum only when `shadowFrustum` (the
 // renderer's condition: shadow epsilon >= 0).
