@@ -10,6 +10,7 @@
 #include "core/bvh/bvh_packet.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -173,6 +174,30 @@ TEST(BvhSpatialSplit, BinsCutAReferenceAtEveryPlaneOfTheirAxis) {
 // and on the node's bounds, along each axis, every reference binned or every stride-th (a
 // large node's sample), an even or odd number of them. Values compare with ==: only zeros'
 // signs may differ between the two orders.
+TEST(BvhSpatialSplit, CutPartsKeepTheirSceneIndexAndAZeroBesideTheirUpperCorner) {
+    Scene scene;
+    scene.materials.push_back({});
+    scene.triangles.push_back({{5.0f, 5.0f, 5.0f}, {6.0f, 5.0f, 5.0f}, {5.0f, 6.0f, 5.0f}, 0});
+    scene.triangles.push_back({{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0});
+    const PrimRecord whole{{0.0f, 0.0f, 0.0f}, 1, {1.0f, 1.0f, 0.0f}, 0.0f};
+    SpatialSplit split;
+    split.axis = 0;
+    split.position = 0.25f;
+    PrimRecord left{}, right{};
+    RecordBounds leftBounds, rightBounds;
+    const SpatialSides sides = applySpatialSplit(scene, &whole, &whole + 1, split, 0.0f, &left,
+                                                 &right, leftBounds, rightBounds);
+    ASSERT_EQ(sides.left, 1u);
+    ASSERT_EQ(sides.right, 1u);
+    for (const PrimRecord& part : {left, right}) {
+        EXPECT_EQ(part.sceneIndex, 1u);
+        EXPECT_EQ(std::bit_cast<uint32_t>(part.zero), 0u); // PrimRecord: lane 3, upper corner
+    }
+    EXPECT_EQ(left.upper.x, 0.25f);
+    EXPECT_EQ(right.lower.x, 0.25f);
+    EXPECT_EQ(right.upper.y, 0.75f); // the triangle's edge at x = 0.25
+}
+
 TEST(BvhSpatialSplit, BinsMatchReferencesCutOneByOne) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);

@@ -14,12 +14,15 @@ namespace raylab {
 inline constexpr int kMaxBins = 32;
 
 // A triangle as the builder moves it around: its bounds and its scene index. 32 bytes, two
-// 128-bit loads (the fourth lanes hold the index bits and the padding, and are ignored).
+// 128-bit loads. The fourth lanes ride along in the SSE code on x, y and z and are ignored: the
+// lower corner's holds the index bits, the upper corner's 0. Index bits below 2^23 are a subnormal
+// float, and an operation on one takes a microcode assist on some CPUs (an AMD Zen 5 took about
+// twice as long over a whole build), so they never enter arithmetic: see xyzOf.
 struct PrimRecord {
     glm::vec3 lower;
     uint32_t sceneIndex;
     glm::vec3 upper;
-    float pad;                                           // never read
+    float zero;                                          // 0.0f in every record (above)
     glm::vec3 centroid() const { return lower + upper; } // twice the centre: only compared
 };
 static_assert(sizeof(PrimRecord) == 32);
@@ -39,6 +42,15 @@ inline __m128 axisLane(int axis) {
 inline __m128 withLane(__m128 lane, __m128 value, __m128 rest) {
     return _mm_or_ps(_mm_and_ps(lane, value), _mm_andnot_ps(lane, rest));
 }
+
+// x, y and z of a corner, lane 3 0: a record's or a box's lower corner (whose lane 3 holds index
+// bits, PrimRecord) as it enters arithmetic, or a part's upper corner as it becomes a record's.
+inline __m128 xyzOf(__m128 corner) {
+    return _mm_and_ps(corner, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+}
+
+// Twice the centre of the box (lower, upper), a record's centroid (PrimRecord::centroid).
+inline __m128 centroidOf(__m128 lower, __m128 upper) { return _mm_add_ps(xyzOf(lower), upper); }
 
 struct SseBox {
     __m128 lower = _mm_set1_ps(kInfinity);
@@ -62,7 +74,7 @@ struct RecordBounds {
     SseBox box, centres;
     void add(__m128 lo, __m128 hi) {
         box.extend(lo, hi);
-        const __m128 c = _mm_add_ps(lo, hi);
+        const __m128 c = centroidOf(lo, hi);
         centres.extend(c, c);
     }
     void add(const PrimRecord& r) { add(_mm_loadu_ps(&r.lower.x), _mm_loadu_ps(&r.upper.x)); }
@@ -185,7 +197,7 @@ inline void binRecords(const PrimRecord* first, const PrimRecord* last, const gl
     const __m128 scale4 = _mm_setr_ps(scale.x, scale.y, scale.z, 0.0f);
     const __m128 top = _mm_set1_ps(static_cast<float>(bins - 1));
     auto binOf4 = [&](__m128 lo, __m128 hi) {
-        return binOfLanes(_mm_add_ps(lo, hi), lo4, scale4, top);
+        return binOfLanes(centroidOf(lo, hi), lo4, scale4, top);
     };
     alignas(16) int32_t b[4], c[4];
     const PrimRecord* r = first;

@@ -24,11 +24,11 @@ struct AxisBoxes {
     // Lane a: Aabb::area() of box a, 2 (ex ey + ey ez + ez ex) rounded in that order (infinite
     // or NaN for an empty box).
     __m128 areas() const {
-        const __m128 a = _mm_sub_ps(upper[0], lower[0]), b = _mm_sub_ps(upper[1], lower[1]);
-        const __m128 c = _mm_sub_ps(upper[2], lower[2]);
+        const __m128 a = _mm_sub_ps(upper[0], xyzOf(lower[0]));
+        const __m128 b = _mm_sub_ps(upper[1], xyzOf(lower[1]));
+        const __m128 c = _mm_sub_ps(upper[2], xyzOf(lower[2]));
         // The extents transposed: x = (a.x, b.x, c.x), y, z alike. Lane 3 (not used) takes
-        // one of c's extents, never a box's lane 3: those hold scene indices, whose bits are
-        // denormal floats, and arithmetic on denormals made the whole build twice as slow.
+        // one of c's extents.
         const __m128 ab01 = _mm_unpacklo_ps(a, b), ab23 = _mm_unpackhi_ps(a, b);
         const __m128 x = _mm_movelh_ps(ab01, c);
         const __m128 y = _mm_shuffle_ps(ab01, c, _MM_SHUFFLE(1, 1, 3, 2));
@@ -142,7 +142,7 @@ float binOverreach(const BinSet& bins, const ObjectSplit& frame, const Aabb& bou
         const int b = __builtin_ctz(used);
         __m128 extents = _mm_setzero_ps();
         for (int a = 0; a < 3; ++a) {
-            const __m128 extent = _mm_sub_ps(bins.box[a][b].upper, bins.box[a][b].lower);
+            const __m128 extent = _mm_sub_ps(bins.box[a][b].upper, xyzOf(bins.box[a][b].lower));
             extents = _mm_or_ps(extents, _mm_and_ps(axisLane(a), extent));
         }
         const __m128i empty = _mm_cmpeq_epi32(countsOf(bins, b), _mm_setzero_si128());
@@ -228,7 +228,7 @@ void partitionOnAxis(const PrimRecord* first, const PrimRecord* last, const Obje
         const __m128 infinity = _mm_set1_ps(kInfinity), sign = _mm_set1_ps(-0.0f);
         for (; p != last; ++p) {
             const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
-            const __m128 c = _mm_add_ps(lo, hi);
+            const __m128 c = centroidOf(lo, hi);
             const __m128 below =
                 _mm_cmplt_ps(_mm_mul_ps(_mm_sub_ps(c, lower4), scale4), leftBelow4);
             const __m128 isLeft =

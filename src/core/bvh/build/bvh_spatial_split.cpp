@@ -192,7 +192,8 @@ SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, cons
         ++to;
         bounds.add(lo, hi);
     };
-    // Lane 3 of a record's lower corner holds its scene index: a part keeps the reference's.
+    // Lane 3 of a record's lower corner holds its scene index: a part keeps the reference's
+    // (and takes PrimRecord::zero in its upper corner's).
     const __m128 indexLane = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
     for (const PrimRecord* p = first; p != last; ++p) {
         const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
@@ -204,10 +205,10 @@ SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, cons
             const CrossingParts parts =
                 cutCrossing(scene.triangles[p->sceneIndex], lo, hi, a, split.position, slack);
             if (!parts.leftEmpty) {
-                put(l, lb, withLane(indexLane, lo, parts.left.lower), parts.left.upper);
+                put(l, lb, withLane(indexLane, lo, parts.left.lower), xyzOf(parts.left.upper));
             }
             if (!parts.rightEmpty) {
-                put(r, rb, withLane(indexLane, lo, parts.right.lower), parts.right.upper);
+                put(r, rb, withLane(indexLane, lo, parts.right.lower), xyzOf(parts.right.upper));
             }
             if (parts.leftEmpty && parts.rightEmpty) {
                 put(l, lb, lo, hi); // only if rounding lost the part: keep it whole
