@@ -168,21 +168,18 @@ TEST(BvhSpatialSplit, BinsCutAReferenceAtEveryPlaneOfTheirAxis) {
     }
 }
 
-// binSpatial adds each reference to two ranges of bins and cuts the ranges' unions to the
-// slabs only at the end; its bins must equal those of references cut to each bin's slab and
-// added one by one, for references crossing any number of bins (1 to all 16), lying on planes
-// and on the node's bounds, along each axis, every reference binned or every stride-th (a
-// large node's sample), an even or odd number of them. Values compare with ==: only zeros'
-// signs may differ between the two orders.
+// A reference cut in two: each part keeps the reference's scene index in lane 3 of its lower
+// corner and takes 0 in lane 3 of its upper corner (PrimRecord), whatever the clip left there
+// (here the left part's clipped vertices' lanes 3, the fields after them, are all negative).
 TEST(BvhSpatialSplit, CutPartsKeepTheirSceneIndexAndAZeroBesideTheirUpperCorner) {
     Scene scene;
     scene.materials.push_back({});
     scene.triangles.push_back({{5.0f, 5.0f, 5.0f}, {6.0f, 5.0f, 5.0f}, {5.0f, 6.0f, 5.0f}, 0});
-    scene.triangles.push_back({{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0});
-    const PrimRecord whole{{0.0f, 0.0f, 0.0f}, 1, {1.0f, 1.0f, 0.0f}, 0.0f};
+    scene.triangles.push_back({{-1.0f, 0.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}, {-0.5f, 0.0f, 0.0f}, 0});
+    const PrimRecord whole{{-1.0f, 0.0f, 0.0f}, 1, {-0.5f, 1.0f, 0.0f}, 0.0f};
     SpatialSplit split;
     split.axis = 0;
-    split.position = 0.25f;
+    split.position = -0.75f;
     PrimRecord left{}, right{};
     RecordBounds leftBounds, rightBounds;
     const SpatialSides sides = applySpatialSplit(scene, &whole, &whole + 1, split, 0.0f, &left,
@@ -193,11 +190,17 @@ TEST(BvhSpatialSplit, CutPartsKeepTheirSceneIndexAndAZeroBesideTheirUpperCorner)
         EXPECT_EQ(part.sceneIndex, 1u);
         EXPECT_EQ(std::bit_cast<uint32_t>(part.zero), 0u); // PrimRecord: lane 3, upper corner
     }
-    EXPECT_EQ(left.upper.x, 0.25f);
-    EXPECT_EQ(right.lower.x, 0.25f);
-    EXPECT_EQ(right.upper.y, 0.75f); // the triangle's edge at x = 0.25
+    EXPECT_EQ(left.upper.x, -0.75f);
+    EXPECT_EQ(right.lower.x, -0.75f);
+    EXPECT_EQ(right.upper.y, 0.5f); // the triangle's edge at x = -0.75
 }
 
+// binSpatial adds each reference to two ranges of bins and cuts the ranges' unions to the
+// slabs only at the end; its bins must equal those of references cut to each bin's slab and
+// added one by one, for references crossing any number of bins (1 to all 16), lying on planes
+// and on the node's bounds, along each axis, every reference binned or every stride-th (a
+// large node's sample), an even or odd number of them. Values compare with ==: only zeros'
+// signs may differ between the two orders.
 TEST(BvhSpatialSplit, BinsMatchReferencesCutOneByOne) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);

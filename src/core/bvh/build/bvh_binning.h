@@ -16,8 +16,8 @@ inline constexpr int kMaxBins = 32;
 // A triangle as the builder moves it around: its bounds and its scene index. 32 bytes, two
 // 128-bit loads. The fourth lanes ride along in the SSE code on x, y and z and are ignored: the
 // lower corner's holds the index bits, the upper corner's 0. Index bits below 2^23 are a subnormal
-// float, and an operation on one takes a microcode assist on some CPUs (an AMD Zen 5 took about
-// twice as long over a whole build), so they never enter arithmetic: see xyzOf.
+// float, and an operation on one takes a microcode assist on some CPUs (an AMD Zen 5 took 1.4-2.1
+// times as long over a whole build), so they never enter arithmetic: see xyzOf.
 struct PrimRecord {
     glm::vec3 lower;
     uint32_t sceneIndex;
