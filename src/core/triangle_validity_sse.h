@@ -3,6 +3,7 @@
 // build's records): one rule, the same decision bit for bit.
 
 #include "scene.h"
+#include "sse_xyz.h"
 
 #include <cmath>
 #include <cstddef>
@@ -17,13 +18,10 @@ namespace raylab {
 struct TriangleLanes {
     __m128 v0, v1, v2;
     explicit TriangleLanes(const Triangle& t)
-        : v0(xyz(_mm_loadu_ps(&t.v0.x))), v1(xyz(_mm_loadu_ps(&t.v1.x))),
-          v2(xyz(_mm_loadu_ps(&t.v2.x))) {
+        : v0(xyzOf(_mm_loadu_ps(&t.v0.x))), v1(xyzOf(_mm_loadu_ps(&t.v1.x))),
+          v2(xyzOf(_mm_loadu_ps(&t.v2.x))) {
         static_assert(offsetof(Triangle, v1) == 12 && offsetof(Triangle, v2) == 24 &&
                       sizeof(Triangle) >= 40);
-    }
-    static __m128 xyz(__m128 v) {
-        return _mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
     }
 };
 

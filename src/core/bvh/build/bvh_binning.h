@@ -3,6 +3,7 @@
 // of a range of primitive records, and their SAH bins. One record's box is one 128-bit register.
 
 #include "aabb.h"
+#include "sse_xyz.h"
 #include "uninitialised_allocator.h"
 
 #include <cstdint>
@@ -43,13 +44,8 @@ inline __m128 withLane(__m128 lane, __m128 value, __m128 rest) {
     return _mm_or_ps(_mm_and_ps(lane, value), _mm_andnot_ps(lane, rest));
 }
 
-// x, y and z of a corner, lane 3 0: a record's or a box's lower corner (whose lane 3 holds index
-// bits, PrimRecord) as it enters arithmetic, or a part's upper corner as it becomes a record's.
-inline __m128 xyzOf(__m128 corner) {
-    return _mm_and_ps(corner, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
-}
-
-// Twice the centre of the box (lower, upper), a record's centroid (PrimRecord::centroid).
+// Twice the centre of the box (lower, upper), a record's centroid (PrimRecord::centroid); the
+// lower corner's lane 3 (index bits) cleared first, as wherever a lower corner enters arithmetic.
 inline __m128 centroidOf(__m128 lower, __m128 upper) { return _mm_add_ps(xyzOf(lower), upper); }
 
 struct SseBox {
