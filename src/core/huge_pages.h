@@ -1,9 +1,10 @@
 #pragma once
 // Large buffers about to be filled at once (a mesh's triangles as they arrive from raylab-import,
-// the wide BVH's nodes and triangle blocks) fault in 2 MiB at a time instead of 4 KiB where the
-// kernel offers transparent huge pages on request (Debian's default, "madvise"): tens of
-// thousands fewer page faults for a big mesh, and for a traversal reading blocks scattered over
-// tens of megabytes (the dragon's are 50 MB), 512 times fewer TLB entries for the same bytes.
+// the BVH build's arrays and the wide BVH's nodes and triangle blocks) fault in 2 MiB at a time
+// instead of 4 KiB where the kernel offers transparent huge pages on request (Debian's default,
+// "madvise"): tens of thousands fewer page faults for a big mesh, and for a traversal reading
+// blocks scattered over tens of megabytes (the dragon's are 50 MB), 512 times fewer TLB entries
+// for the same bytes.
 
 #include <cstddef>
 
@@ -13,5 +14,15 @@ namespace raylab {
 // where the system has no such advice), no effect on what the memory holds. Call before the
 // memory is first touched: pages already faulted in stay small until the kernel merges them.
 void adviseHugePages(void* data, std::size_t bytes);
+
+inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
+
+// Memory of its own for an array of `bytes` (at least kHugePageBytes): mapped from the system on
+// a 2 MiB boundary, rounded up to whole 2 MiB pages and advised huge pages, untouched (the
+// system gives it zeroed as each page is first touched). Returned to the system by
+// freeHugePageArray(data, bytes) with the same `bytes`, never kept for the next array. Throws
+// std::bad_alloc when the system has no such memory.
+void* allocateHugePageArray(std::size_t bytes);
+void freeHugePageArray(void* data, std::size_t bytes);
 
 } // namespace raylab

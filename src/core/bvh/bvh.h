@@ -40,7 +40,7 @@ struct BvhTriangle {
 struct Bvh {
     // nodes[0] is the root; empty for a scene with no valid triangle, and, once the 8-wide form
     // is built from them, unless BvhBuildOptions::keepBinaryNodes asks to keep them.
-    std::vector<BvhNode> nodes;
+    UninitialisedVector<BvhNode> nodes;
     // The leaf triangles, in leaf order, when there is no SIMD form. With the SIMD form, the
     // triangles are kept once, in triangleBlocks: this is empty, and leaf triangle i of a binary
     // leaf is lane i % 8 of triangleBlocks[i / 8] (leafTriangle() reads either).
@@ -59,8 +59,8 @@ struct Bvh {
     // Empty: closestHit and anyHit use the binary nodes and the scalar triangle test.
     // wideNodes[0] is the root; the blocks are in leaf order. resize() leaves new elements
     // unwritten: the build writes each one once, on the thread that fills it.
-    std::vector<BvhWideNode, UninitialisedAllocator<BvhWideNode>> wideNodes;
-    std::vector<BvhTriangleBlock, UninitialisedAllocator<BvhTriangleBlock>> triangleBlocks;
+    UninitialisedVector<BvhWideNode> wideNodes;
+    UninitialisedVector<BvhTriangleBlock> triangleBlocks;
 
     // Leaf triangle i of a binary leaf (BvhNode::index <= i < index + count).
     BvhTriangle leafTriangle(uint32_t i) const;

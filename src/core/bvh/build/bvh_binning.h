@@ -30,7 +30,7 @@ static_assert(sizeof(PrimRecord) == 32);
 
 // The build's arrays of references (resize() leaves them unwritten: the build writes every
 // record it makes room for).
-using RecordVector = std::vector<PrimRecord, UninitialisedAllocator<PrimRecord>>;
+using RecordVector = UninitialisedVector<PrimRecord>;
 
 // All bits set in lane `axis` (0, 1 or 2) of a register, the other lanes clear.
 inline __m128 axisLane(int axis) {

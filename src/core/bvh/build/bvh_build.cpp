@@ -204,7 +204,8 @@ BvhNode padded(BvhNode node, float pad) {
 // `spans`, as the 8-wide form wants them), subtrees on the team.
 void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTask>& deferred,
               const std::vector<Subtree>& subtrees, float pad, bool forWide, BuildTeam& team,
-              Bvh& bvh, std::vector<uint32_t>& sceneIndices, std::vector<LeafSpan>& spans) {
+              Bvh& bvh, UninitialisedVector<uint32_t>& sceneIndices,
+              UninitialisedVector<LeafSpan>& spans) {
     const Layout layout = layOut(top, deferred, subtrees);
     bvh.nodes.resize(layout.nodes);
     LeafOutput out;
@@ -331,8 +332,8 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);
     });
-    std::vector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
-    std::vector<LeafSpan> spans;        // of the binary nodes, for the 8-wide form
+    UninitialisedVector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
+    UninitialisedVector<LeafSpan> spans;        // of the binary nodes, for the 8-wide form
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices, spans);
     subtrees = {};
     if (wide && !buildWideBvh(bvh, scene, sceneIndices, spans, options.keepBinaryNodes, team)) {
@@ -344,7 +345,8 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         }
     }
     if (!bvh.wideNodes.empty() && !options.keepBinaryNodes) {
-        std::vector<BvhNode>().swap(bvh.nodes); // the 8-wide form holds the tree and triangles
+        // The 8-wide form holds the tree and triangles.
+        UninitialisedVector<BvhNode>().swap(bvh.nodes);
     }
     return bvh;
 }

@@ -21,8 +21,6 @@
 
 #include "bvh/build/bvh_collapse.h"
 
-#include "huge_pages.h"
-
 #include <algorithm>
 #include <vector>
 
@@ -70,14 +68,14 @@ struct WidePart {
 struct BinaryTree {
     const Bvh& bvh;
     const Scene& scene;
-    const std::vector<uint32_t>& leafScene; // leaf triangle -> scene triangle
-    const std::vector<LeafSpan>& spans;     // per binary node
+    const UninitialisedVector<uint32_t>& leafScene; // leaf triangle -> scene triangle
+    const UninitialisedVector<LeafSpan>& spans;     // per binary node
     // Leaf triangle -> its lane in the BVH's blocks; empty when the binary leaves are not to
     // be pointed at the blocks.
     std::vector<uint32_t> slotOf;
 
-    BinaryTree(const Bvh& b, const Scene& s, const std::vector<uint32_t>& leaves,
-               const std::vector<LeafSpan>& nodeSpans, bool slots)
+    BinaryTree(const Bvh& b, const Scene& s, const UninitialisedVector<uint32_t>& leaves,
+               const UninitialisedVector<LeafSpan>& nodeSpans, bool slots)
         : bvh(b), scene(s), leafScene(leaves), spans(nodeSpans), slotOf(slots ? leaves.size() : 0) {
     }
 
@@ -317,8 +315,9 @@ void spanBinaryNodes(const BvhNode* nodes, std::size_t first, std::size_t last, 
     }
 }
 
-bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
-                  const std::vector<LeafSpan>& spans, bool pointBinaryLeaves, BuildTeam& team) {
+bool buildWideBvh(Bvh& bvh, const Scene& scene, const UninitialisedVector<uint32_t>& leafScene,
+                  const UninitialisedVector<LeafSpan>& spans, bool pointBinaryLeaves,
+                  BuildTeam& team) {
     bvh.wideNodes.clear();
     bvh.triangleBlocks.clear();
     if (bvh.nodes.empty()) {
@@ -356,13 +355,9 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& lea
     if (overflow || blocks > kWideFirstBlockMask || (kWideLanes - 1) * depth + 1 > kWideStackSize) {
         return false;
     }
-    // Every node and block is written below, once (resize leaves them unwritten): allocated,
-    // advised huge pages (huge_pages.h), then first touched by the thread that fills it.
-    bvh.wideNodes.reserve(nodes);
-    adviseHugePages(bvh.wideNodes.data(), nodes * sizeof(BvhWideNode));
+    // Every node and block is written below, once (resize leaves them unwritten, in huge pages:
+    // uninitialised_allocator.h), first touched by the thread that fills it.
     bvh.wideNodes.resize(nodes);
-    bvh.triangleBlocks.reserve(blocks);
-    adviseHugePages(bvh.triangleBlocks.data(), blocks * sizeof(BvhTriangleBlock));
     bvh.triangleBlocks.resize(blocks);
     std::copy(top.nodes.begin(), top.nodes.end(), bvh.wideNodes.begin());
     writeBlocks(top, tree, bvh.triangleBlocks.data());

@@ -39,7 +39,8 @@ void spanBinaryNodes(const BvhNode* nodes, std::size_t first, std::size_t last, 
 // Returns false, with the wide form empty and bvh.nodes unchanged, when the tree does not fit
 // the wide form. The top of the wide tree is made on the calling thread, its subtrees on the
 // team; the result does not depend on the team's size.
-bool buildWideBvh(Bvh& bvh, const Scene& scene, const std::vector<uint32_t>& leafScene,
-                  const std::vector<LeafSpan>& spans, bool pointBinaryLeaves, BuildTeam& team);
+bool buildWideBvh(Bvh& bvh, const Scene& scene, const UninitialisedVector<uint32_t>& leafScene,
+                  const UninitialisedVector<LeafSpan>& spans, bool pointBinaryLeaves,
+                  BuildTeam& team);
 
 } // namespace raylab
