@@ -73,6 +73,9 @@ struct BenchReport {
     std::string embreeIsa;                     // empty: Embree's own choice
     double embreeBuildSeconds = 0.0;
     int builds = 0; // each build time is the best of this many builds (raylab's and Embree's)
+    // Each side's first build in the process (raylab's, then Embree's): what a program that
+    // builds once waits for, its memory new to the process.
+    double raylabFirstBuildSeconds = 0.0, embreeFirstBuildSeconds = 0.0;
     std::size_t embreeBytes = 0, embreeGeometryBytes = 0; // EmbreeScene
     std::array<EmbreeCallFigures, kEmbreeCalls> embree;   // every ray of the workload
     // The bounce workload's bounce rays alone: raylab's single rays and each Embree call.

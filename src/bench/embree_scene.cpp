@@ -99,9 +99,12 @@ bool EmbreeScene::build() {
         return false;
     }
     memoryBytes_ = grownBy(before, deviceBytes_.load());
-    buildSeconds_ =
-        std::min(buildSeconds_,
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (buildSeconds_ == 1e30) {
+        firstBuildSeconds_ = seconds;
+    }
+    buildSeconds_ = std::min(buildSeconds_, seconds);
     return true;
 }
 

@@ -211,6 +211,16 @@ void expectFigures(const nlohmann::json& f, std::size_t rays, const std::string&
     }
 }
 
+// The figures of raylab's own path ("raylab") without its first build, after checking that: the
+// figures of one of raylab's tracers, which "raylab" repeats, and its first build in the
+// process, which took at least as long as the best of its builds.
+nlohmann::json pathFigures(const nlohmann::json& j) {
+    nlohmann::json path = j.at("raylab");
+    EXPECT_GE(path.at("first_build_ms").get<double>(), path.at("build_ms").get<double>());
+    path.erase("first_build_ms");
+    return path;
+}
+
 // The Embree part of a report: every call's figures over the same rays as raylab's, its ratio
 // to raylab, its answers agreeing with raylab's, the best call the fastest, Embree's BVH.
 void expectEmbreeReport(const nlohmann::json& j) {
@@ -250,6 +260,7 @@ void expectEmbreeReport(const nlohmann::json& j) {
     EXPECT_GT(embree.at("memory_bytes").get<std::size_t>(), 0u);
     EXPECT_GT(embree.at("geometry_bytes").get<std::size_t>(), 0u);
     EXPECT_GT(embree.at("build_ms").get<double>(), 0.0);
+    EXPECT_GE(embree.at("first_build_ms").get<double>(), embree.at("build_ms").get<double>());
     EXPECT_EQ(mrays(embree, "one_thread"), mrays(j.at("embree_best"), "one_thread"));
 }
 
@@ -273,7 +284,7 @@ TEST(BenchCli, PrimaryWorkloadReportsEveryEmbreeCall) {
     EXPECT_GT(j.at("bvh").at("memory_bytes").get<std::size_t>(), 0u);
     // The box has 30 triangles: the renderer traces it in blocks, and so does raylab's figure.
     EXPECT_EQ(j.at("raylab_path").get<std::string>(), "blocks");
-    EXPECT_EQ(j.at("raylab"), j.at("raylab_blocks"));
+    EXPECT_EQ(pathFigures(j), j.at("raylab_blocks"));
     expectFigures(j.at("raylab_packets"), rays, "raylab_packets");
     if (!hasEmbree(j)) {
         GTEST_SKIP() << "raylab-bench was built without Embree";
@@ -375,7 +386,7 @@ TEST(BenchCli, BunnyBounceRaysAgreeWithEmbree) {
     // The bunny has 69,451 triangles: the renderer traces it in packets, two rows of a block
     // at a time (16 rays with AVX-512, else two packets of 8).
     EXPECT_EQ(j.at("raylab_path").get<std::string>(), "packets16");
-    EXPECT_EQ(j.at("raylab"), j.at("raylab_packets16"));
+    EXPECT_EQ(pathFigures(j), j.at("raylab_packets16"));
     EXPECT_EQ(j.at("packet16_mismatches").get<int>(), 0);
     EXPECT_GT(j.at("bounce_rays").get<int>(), 0);
     if (!hasEmbree(j)) {
