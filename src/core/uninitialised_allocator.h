@@ -7,8 +7,8 @@
 // Arrays of kHugePageBytes (2 MiB) or more get memory of their own in transparent huge pages
 // (allocateHugePageArray, huge_pages.h), advised before anything touches it: each 2 MiB faults in
 // at once instead of in 512 pieces, and is returned to the system when the array is freed. Page
-// faults are dear in a virtual machine (about 7 us each in the Zen 5 guest of PERFORMANCE.md,
-// "Memory and page faults"), and a build writes tens of megabytes of new arrays: a first build of
+// faults are dear in a virtual machine (about 11 us each in the Zen 5 guest of PERFORMANCE.md,
+// "On the Zen 5"), and a build writes tens of megabytes of new arrays: a first build of
 // the dragon took 26,000 page faults before, 7,000 since. Smaller arrays come from the heap.
 
 #include "huge_pages.h"
