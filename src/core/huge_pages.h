@@ -19,7 +19,9 @@ inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
 
 // Memory of its own for an array of `bytes` (at least kHugePageBytes): mapped from the system on
 // a 2 MiB boundary, rounded up to whole 2 MiB pages and advised huge pages, untouched (the
-// system gives it zeroed as each page is first touched). Returned to the system by
+// system gives it zeroed as each page is first touched; once the last page is touched the system
+// holds up to 2 MiB more than `bytes` for it, which Bvh::memoryBytes does not count, as it
+// counts no allocator's overhead). Returned to the system by
 // freeHugePageArray(data, bytes) with the same `bytes`, never kept for the next array. Throws
 // std::bad_alloc when the system has no such memory.
 void* allocateHugePageArray(std::size_t bytes);
