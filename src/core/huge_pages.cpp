@@ -8,8 +8,9 @@ namespace raylab {
 
 namespace {
 
-std::size_t wholeHugePages(std::size_t bytes) {
-    return (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+// `at` rounded up to a multiple of 2 MiB (a size, or an address to start a huge page at).
+std::uintptr_t roundUpToHugePage(std::uintptr_t at) {
+    return (at + kHugePageBytes - 1) & ~std::uintptr_t{kHugePageBytes - 1};
 }
 
 } // namespace
@@ -17,7 +18,7 @@ std::size_t wholeHugePages(std::size_t bytes) {
 void adviseHugePages(void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
     const auto begin = reinterpret_cast<std::uintptr_t>(data);
-    const std::uintptr_t first = (begin + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+    const std::uintptr_t first = roundUpToHugePage(begin);
     const std::uintptr_t end = (begin + bytes) & ~(kHugePageBytes - 1);
     if (end > first) {
         ::madvise(reinterpret_cast<void*>(first), end - first, MADV_HUGEPAGE);
@@ -29,7 +30,7 @@ void adviseHugePages(void* data, std::size_t bytes) {
 }
 
 void* allocateHugePageArray(std::size_t bytes) {
-    const std::size_t size = wholeHugePages(bytes);
+    const std::size_t size = roundUpToHugePage(bytes);
     if (size < bytes || size + kHugePageBytes < size) {
         throw std::bad_alloc();
     }
@@ -40,7 +41,7 @@ void* allocateHugePageArray(std::size_t bytes) {
         throw std::bad_alloc();
     }
     const auto begin = reinterpret_cast<std::uintptr_t>(mapped);
-    const std::uintptr_t aligned = (begin + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+    const std::uintptr_t aligned = roundUpToHugePage(begin);
     if (aligned > begin) {
         ::munmap(mapped, aligned - begin);
     }
@@ -54,7 +55,7 @@ void* allocateHugePageArray(std::size_t bytes) {
 
 void freeHugePageArray(void* data, std::size_t bytes) {
     if (data) {
-        ::munmap(data, wholeHugePages(bytes));
+        ::munmap(data, roundUpToHugePage(bytes));
     }
 }
 
