@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <vector>
 
 namespace raylab {
@@ -117,6 +118,37 @@ struct BvhBuildOptions {
 bool bvhSimdSupported();
 
 Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options = {});
+
+// The working arrays of BVH builds (the references and their spare room, the binary nodes when
+// only the 8-wide form is kept, the collapse's inputs), kept from one build to the next by a
+// caller that builds again and again: raylab-bench's repeated builds, a program that rebuilds a
+// changing scene. rebuildBvh leaves them allocated, so that the next build of about the same size
+// writes memory already faulted in instead of new pages the system must map and zero (on the
+// Zen 5 guest of PERFORMANCE.md, "Memory and page faults", about a tenth of a 2-thread Sponza
+// build). Empty until a build uses it; then holds bytes(), 90-105 bytes a triangle of the largest
+// scene built with it (the dragon's 81 MB), until destroyed.
+class BvhBuildMemory {
+public:
+    BvhBuildMemory();
+    ~BvhBuildMemory();
+    BvhBuildMemory(BvhBuildMemory&&) noexcept;
+    BvhBuildMemory& operator=(BvhBuildMemory&&) noexcept;
+
+    std::size_t bytes() const; // held now
+
+    struct Arrays;    // internal to the build (bvh/build/bvh_build_memory.h)
+    Arrays& arrays(); // made anew in a memory moved from
+
+private:
+    std::unique_ptr<Arrays> arrays_;
+};
+
+// Makes bvh the BVH of scene, the same as buildBvh(scene, options) (whatever bvh held before),
+// in bvh's own arrays and memory's where they are large enough: only what grows is allocated.
+// bvh.memoryBytes() then counts the capacity bvh keeps, which may exceed a fresh build's after
+// a larger scene.
+void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemory& memory,
+                Bvh& bvh);
 
 // The closest hit with ray.tMin < t < ray.tMax; Hit::triangle is the scene's triangle index.
 Hit closestHit(const Bvh& bvh, const Ray& ray);

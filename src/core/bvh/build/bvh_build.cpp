@@ -9,6 +9,7 @@
 // whatever the thread count.
 
 #include "bvh/build/bvh_binning.h"
+#include "bvh/build/bvh_build_memory.h"
 #include "bvh/build/bvh_build_subtree.h"
 #include "bvh/build/bvh_build_team.h"
 #include "bvh/build/bvh_collapse.h"
@@ -32,17 +33,17 @@ constexpr std::size_t kMinTaskSize = 4096;  // smallest subtree worth a parallel
 constexpr std::size_t kBoundsChunk = 65536; // records per chunk of the root's bounds
 constexpr std::size_t kRecordChunk = 16384; // triangles per chunk of makeRecords
 
-// One record per valid triangle, in scene order; counts the others in `skipped`, and finds the
-// records' bounds (as boundsOf would) and the widest triangle on each axis (upper - lower, world
-// units).
+// Makes `records` one record per valid triangle, in scene order; counts the others in `skipped`,
+// and finds the records' bounds (as boundsOf would) and the widest triangle on each axis (upper -
+// lower, world units).
 // Chunk c writes its records from c * kRecordChunk on, in the array itself; only where
 // triangles were skipped do later chunks move down after. The array has capacity for
-// `extraRoom` times as many records more.
-RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, std::size_t& skipped,
-                         RecordBounds& bounds, glm::vec3& widest) {
+// `extraRoom` times as many records more (its own kept where it is that large already).
+void makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, RecordVector& records,
+                 std::size_t& skipped, RecordBounds& bounds, glm::vec3& widest) {
     const std::size_t triangles = scene.triangles.size();
     const std::size_t chunks = (triangles + kRecordChunk - 1) / kRecordChunk;
-    RecordVector records;
+    records.clear();
     records.reserve(triangles +
                     static_cast<std::size_t>(extraRoom * static_cast<double>(triangles)));
     records.resize(triangles);
@@ -92,7 +93,6 @@ RecordVector makeRecords(const Scene& scene, float extraRoom, BuildTeam& team, s
     }
     skipped = triangles - at;
     records.resize(at);
-    return records;
 }
 
 // Bounds of all records, chunk by chunk on the team, merged in chunk order.
@@ -246,10 +246,40 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
     bvh.leafReferences = layout.records;
 }
 
+// Empties bvh as a fresh Bvh is, its arrays keeping their capacity.
+void clearKeepingArrays(Bvh& bvh) {
+    auto nodes = std::move(bvh.nodes);
+    auto triangles = std::move(bvh.triangles);
+    auto wideNodes = std::move(bvh.wideNodes);
+    auto triangleBlocks = std::move(bvh.triangleBlocks);
+    bvh = Bvh{};
+    nodes.clear();
+    triangles.clear();
+    wideNodes.clear();
+    triangleBlocks.clear();
+    bvh.nodes = std::move(nodes);
+    bvh.triangles = std::move(triangles);
+    bvh.wideNodes = std::move(wideNodes);
+    bvh.triangleBlocks = std::move(triangleBlocks);
+}
+
 } // namespace
 
 Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
+    BvhBuildMemory memory;
     Bvh bvh;
+    rebuildBvh(scene, options, memory, bvh);
+    return bvh;
+}
+
+void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemory& memory,
+                Bvh& bvh) {
+    clearKeepingArrays(bvh);
+    BvhBuildMemory::Arrays& kept = memory.arrays();
+    kept.clear();
+    if (bvh.nodes.capacity() < kept.binaryNodes.capacity()) {
+        bvh.nodes.swap(kept.binaryNodes); // kept there by the last build that dropped them
+    }
     // A scene smaller than one subtree task gains nothing from more threads than one.
     BuildTeam team(scene.triangles.size() < 2 * kMinTaskSize ? 1
                                                              : resolveThreadCount(options.threads));
@@ -258,10 +288,11 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     // Spatial splits add at most this fraction of references (BvhBuildOptions; NaN: none).
     const float spatialBudget =
         options.spatialSplitBudget > 0.0f ? std::min(options.spatialSplitBudget, 1.0f) : 0.0f;
-    RecordVector records =
-        makeRecords(scene, spatialBudget, team, bvh.skippedTriangles, recordBounds, widestTriangle);
+    RecordVector& records = kept.records;
+    makeRecords(scene, spatialBudget, team, records, bvh.skippedTriangles, recordBounds,
+                widestTriangle);
     if (records.empty()) {
-        return bvh;
+        return;
     }
     const Aabb sceneBox = recordBounds.box.toAabb(); // of the valid triangles
     // The largest |coordinate| of a valid vertex.
@@ -302,7 +333,8 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
     root.splitBudget =
         context.scene ? static_cast<uint32_t>(spatialBudget * static_cast<double>(total)) : 0;
     records.resize(root.room());
-    RecordVector spare(root.room());
+    RecordVector& spare = kept.spare;
+    spare.resize(root.room());
     root.first = records.data();
     root.spare = spare.data();
 
@@ -332,8 +364,8 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);
     });
-    UninitialisedVector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
-    UninitialisedVector<LeafSpan> spans;        // of the binary nodes, for the 8-wide form
+    UninitialisedVector<uint32_t>& sceneIndices = kept.sceneIndices;
+    UninitialisedVector<LeafSpan>& spans = kept.spans;
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices, spans);
     subtrees = {};
     if (wide && !buildWideBvh(bvh, scene, sceneIndices, spans, options.keepBinaryNodes, team)) {
@@ -345,10 +377,11 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options) {
         }
     }
     if (!bvh.wideNodes.empty() && !options.keepBinaryNodes) {
-        // The 8-wide form holds the tree and triangles.
-        UninitialisedVector<BvhNode>().swap(bvh.nodes);
+        // The 8-wide form holds the tree and triangles; the binary nodes' array is kept for the
+        // next build.
+        kept.binaryNodes = std::move(bvh.nodes);
+        bvh.nodes = UninitialisedVector<BvhNode>();
     }
-    return bvh;
 }
 
 std::size_t Bvh::memoryBytes() const {

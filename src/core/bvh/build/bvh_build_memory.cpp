@@ -1,0 +1,33 @@
+#include "bvh/build/bvh_build_memory.h"
+
+namespace raylab {
+
+void BvhBuildMemory::Arrays::clear() {
+    records.clear();
+    spare.clear();
+    binaryNodes.clear();
+    sceneIndices.clear();
+    spans.clear();
+}
+
+std::size_t BvhBuildMemory::Arrays::bytes() const {
+    return (records.capacity() + spare.capacity()) * sizeof(PrimRecord) +
+           binaryNodes.capacity() * sizeof(BvhNode) + sceneIndices.capacity() * sizeof(uint32_t) +
+           spans.capacity() * sizeof(LeafSpan);
+}
+
+BvhBuildMemory::BvhBuildMemory() : arrays_(std::make_unique<Arrays>()) {}
+BvhBuildMemory::~BvhBuildMemory() = default;
+BvhBuildMemory::BvhBuildMemory(BvhBuildMemory&&) noexcept = default;
+BvhBuildMemory& BvhBuildMemory::operator=(BvhBuildMemory&&) noexcept = default;
+
+BvhBuildMemory::Arrays& BvhBuildMemory::arrays() {
+    if (!arrays_) {
+        arrays_ = std::make_unique<Arrays>();
+    }
+    return *arrays_;
+}
+
+std::size_t BvhBuildMemory::bytes() const { return arrays_ ? arrays_->bytes() : 0; }
+
+} // namespace raylab
