@@ -39,6 +39,9 @@
 #include <memory>
 #include <string>
 #include <vector>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #ifdef RAYLAB_HAVE_EMBREE
 #include "embree_rays.h"
 #include "embree_scene.h"
@@ -431,6 +434,16 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+#ifdef __GLIBC__
+    // Memory freed to the heap stays in the process (glibc otherwise unmaps large blocks and trims
+    // the heap, by thresholds that move with what was freed), so that each of Embree's builds
+    // after the first reuses its predecessors' memory, as raylab's reuse theirs (rebuildBvh),
+    // whatever the other side's builds did between: without it, Embree's later builds of the thin
+    // triangles on 1 thread took 1,265 page faults each and twice as long, in turns with
+    // raylab's rebuilds, and 0 on their own (PERFORMANCE.md, "Memory and page faults").
+    mallopt(M_MMAP_THRESHOLD, 1 << 30); // blocks of up to 1 GiB from the heap
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
     try {
         return run(argc, argv);
     } catch (const std::exception& e) {
