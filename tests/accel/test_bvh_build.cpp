@@ -9,6 +9,7 @@
 #include "core/bvh/build/bvh_build_clip.h"
 #include "core/bvh/build/bvh_build_team.h"
 #include "core/bvh/build/bvh_clip.h"
+#include "core/bvh/build/bvh_slot_array.h"
 
 #include <atomic>
 #include <cstring>
@@ -203,6 +204,62 @@ TEST(BvhRebuild, MemoryMovedFromStillBuilds) {
     EXPECT_GT(taken.bytes(), 0u);
     rebuildBvh(scene, {}, memory, bvh); // NOLINT(bugprone-use-after-move): the case tested
     expectSameBytes(bvh, buildBvh(scene));
+}
+
+// A SlotArray fills its slot and nothing beyond it, then moves its elements to memory of its own.
+TEST(SlotArray, GrowsOutOfItsSlotKeepingItsElements) {
+    constexpr uint32_t kCanary = 0xdeadbeefu;
+    std::vector<uint32_t> memory(12, kCanary);
+    SlotArray<uint32_t> a(memory.data(), 8);
+    for (uint32_t i = 0; i < 8; ++i) {
+        a.push_back(i);
+    }
+    EXPECT_TRUE(a.inSlot());
+    EXPECT_EQ(a.data(), memory.data());
+    for (uint32_t i = 0; i < 8; ++i) {
+        EXPECT_EQ(memory[i], i);
+    }
+    a.push_back(8);
+    EXPECT_FALSE(a.inSlot());
+    a.resize(100);
+    for (uint32_t i = 0; i < 9; ++i) {
+        EXPECT_EQ(a[i], i);
+    }
+    for (std::size_t i = 8; i < memory.size(); ++i) {
+        EXPECT_EQ(memory[i], kCanary) << i; // never written past the slot
+    }
+    SlotArray<uint32_t> b = std::move(a);
+    EXPECT_EQ(b.size(), 100u);
+    EXPECT_EQ(b[5], 5u);
+    EXPECT_EQ(a.size(), 0u); // NOLINT(bugprone-use-after-move): the state moved from is tested
+    SlotArray<uint32_t> unslotted;
+    unslotted.resize(3);
+    unslotted[2] = 7;
+    EXPECT_EQ(unslotted[2], 7u);
+}
+
+// Leaves of one reference: each subtree makes twice as many nodes as its references, more than
+// its slot holds (bvh_build.cpp, subtreeSlots), and its nodes move out of the slot mid-build.
+TEST(BvhBuild, SubtreesThatOutgrowTheirSlotsStillBuildTheTree) {
+    const Scene scene = makeTriangleSoup(30000, 0.03f, 16);
+    BvhBuildOptions options;
+    options.simd = false;
+    options.maxLeafSize = 1;
+    options.threads = 1;
+    const Bvh one = buildBvh(scene, options);
+    ASSERT_FALSE(one.nodes.empty());
+    std::size_t leaves = 0;
+    for (const BvhNode& node : one.nodes) {
+        if (node.isLeaf()) {
+            ASSERT_EQ(node.count, 1u);
+            ++leaves;
+        }
+    }
+    EXPECT_EQ(leaves, one.leafReferences);
+    EXPECT_EQ(one.nodes.size(), 2 * leaves - 1);
+    options.threads = 2;
+    expectSameBytes(one, buildBvh(scene, options));
+    expectMatchesBruteForce(scene, one, makeRandomRays(800, 17));
 }
 
 TEST(BuildTeam, RunsEveryIndexExactlyOnce) {

@@ -4,7 +4,7 @@
 // add references (bvh_presplit.h). Nodes are split as bvh_build_subtree.h describes. The top of
 // the tree, down to subtrees of a size that depends only on the triangle count, is built on
 // all threads (its large nodes each by chunks on every thread, its smaller ones several at a
-// time: bvh_build_top.cpp); those subtrees are then built in parallel, each into its own arrays
+// time: bvh_build_top.cpp); those subtrees are then built in parallel, each into its own slots
 // with its leaves in depth-first order, and assembled in a fixed order, so the result is the same
 // whatever the thread count.
 
@@ -191,6 +191,27 @@ void writeLeaves(const Scene& scene, const uint32_t* first, std::size_t count, s
     }
 }
 
+// Where each deferred subtree's arrays go in the two arrays they share: subtree i's nodes in
+// [nodes[i], nodes[i + 1]) of one, its leaf references in [leaves[i], leaves[i + 1]) of the
+// other, each slot starting on a 64-byte boundary (no cache line shared by two threads' subtrees).
+// A subtree's leaves hold each of its references once: room() of them at most, which its slot
+// holds. Its nodes are 2 * leaves - 1, about half its references where leaves hold up to 8:
+// their slot holds count + 1 of them, and a subtree of smaller leaves grows out of it (SlotArray).
+struct SubtreeSlots {
+    std::vector<std::size_t> nodes{0}, leaves{0};
+};
+
+SubtreeSlots subtreeSlots(const std::vector<BuildTask>& deferred) {
+    constexpr std::size_t kNodesALine = 64 / sizeof(BvhNode), kLeavesALine = 64 / sizeof(uint32_t);
+    auto roundUp = [](std::size_t n, std::size_t to) { return (n + to - 1) / to * to; };
+    SubtreeSlots slots;
+    for (const BuildTask& task : deferred) {
+        slots.nodes.push_back(slots.nodes.back() + roundUp(task.count + 1, kNodesALine));
+        slots.leaves.push_back(slots.leaves.back() + roundUp(task.room(), kLeavesALine));
+    }
+    return slots;
+}
+
 // Box tests round; the watertight test's edge decisions round too. Every node box is widened by
 // `pad` so that box tests never cull a triangle the watertight test hits.
 BvhNode padded(BvhNode node, float pad) {
@@ -344,8 +365,12 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
     std::vector<BuildTask> deferred;
     builder.buildTop(top, root, team, std::max(kMinTaskSize, total / 64), deferred);
 
-    // The subtrees, largest first (the order they finish in does not matter).
+    // The subtrees, largest first (the order they finish in does not matter), each in its slots
+    // of two arrays shared by them all (subtreeSlots).
     std::vector<Subtree> subtrees(deferred.size());
+    const SubtreeSlots slots = subtreeSlots(deferred);
+    kept.subtreeNodes.resize(slots.nodes.back());
+    kept.subtreeLeaves.resize(slots.leaves.back());
     std::vector<std::size_t> order(deferred.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -355,19 +380,21 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
         const std::size_t i = order[k];
         BuildTask local = deferred[i];
         local.slot = 0;
-        // Built in the job's own Subtree and moved in once: the subtrees' vectors lie side by
-        // side, and growing them from several threads would share their cache lines.
+        // Built in the job's own Subtree and moved in once: the subtrees lie side by side, and
+        // growing them from several threads would share their cache lines.
         Subtree subtree;
-        subtree.nodes.reserve(local.count + 1);
+        subtree.nodes = SlotArray<BvhNode>(kept.subtreeNodes.data() + slots.nodes[i],
+                                           slots.nodes[i + 1] - slots.nodes[i]);
+        subtree.leafTriangles = SlotArray<uint32_t>(kept.subtreeLeaves.data() + slots.leaves[i],
+                                                    slots.leaves[i + 1] - slots.leaves[i]);
         subtree.nodes.resize(1);
-        subtree.leafTriangles.reserve(local.count);
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);
     });
     UninitialisedVector<uint32_t>& sceneIndices = kept.sceneIndices;
     UninitialisedVector<LeafSpan>& spans = kept.spans;
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices, spans);
-    subtrees = {};
+    std::vector<Subtree>().swap(subtrees);
     if (wide && !buildWideBvh(bvh, scene, sceneIndices, spans, options.keepBinaryNodes, team)) {
         // The tree does not fit the wide form: the binary form keeps its own triangles.
         bvh.triangles.resize(sceneIndices.size());

@@ -8,12 +8,15 @@ void BvhBuildMemory::Arrays::clear() {
     binaryNodes.clear();
     sceneIndices.clear();
     spans.clear();
+    subtreeNodes.clear();
+    subtreeLeaves.clear();
 }
 
 std::size_t BvhBuildMemory::Arrays::bytes() const {
     return (records.capacity() + spare.capacity()) * sizeof(PrimRecord) +
            binaryNodes.capacity() * sizeof(BvhNode) + sceneIndices.capacity() * sizeof(uint32_t) +
-           spans.capacity() * sizeof(LeafSpan);
+           spans.capacity() * sizeof(LeafSpan) + subtreeNodes.capacity() * sizeof(BvhNode) +
+           subtreeLeaves.capacity() * sizeof(uint32_t);
 }
 
 BvhBuildMemory::BvhBuildMemory() : arrays_(std::make_unique<Arrays>()) {}

@@ -16,6 +16,9 @@ struct BvhBuildMemory::Arrays {
     UninitialisedVector<BvhNode> binaryNodes;   // when the Bvh keeps only the 8-wide form
     UninitialisedVector<uint32_t> sceneIndices; // of the leaf triangles, for the 8-wide form
     UninitialisedVector<LeafSpan> spans;        // of the binary nodes, for the 8-wide form
+    // The subtrees' nodes and leaf references, each subtree in slots of its own (bvh_build.cpp)
+    UninitialisedVector<BvhNode> subtreeNodes;
+    UninitialisedVector<uint32_t> subtreeLeaves;
 
     void clear(); // every array empty, its capacity kept
     std::size_t bytes() const;

@@ -7,6 +7,7 @@
 #include "bvh/build/bvh_binning.h"
 #include "bvh/build/bvh_build_object_split.h"
 #include "bvh/build/bvh_build_team.h"
+#include "bvh/build/bvh_slot_array.h"
 #include "bvh/build/bvh_spatial_split.h"
 #include "bvh/bvh.h"
 
@@ -58,9 +59,10 @@ struct BuildContext {
 
 // A built subtree: nodes[0] is its root; a leaf node holds the leaf references [index, index +
 // count) of leafTriangles, each the scene index of its triangle (all the BVH keeps of a record).
+// Both arrays may lie in slots of arrays shared with the other subtrees (bvh_slot_array.h).
 struct Subtree {
-    std::vector<BvhNode> nodes;
-    std::vector<uint32_t> leafTriangles;
+    SlotArray<BvhNode> nodes;
+    SlotArray<uint32_t> leafTriangles;
     // Makes nodes[slot] a leaf of the references [first, first + count).
     void addLeaf(uint32_t slot, const PrimRecord* first, uint32_t count);
 };

@@ -1,0 +1,76 @@
+#pragma once
+// A growable array in a slot of memory it does not own (internal to core): the build's subtrees
+// each take a part of one array shared by them all, which lies in huge pages where it is large
+// (uninitialised_allocator.h), instead of growing arrays of their own on the heap, whose every new
+// 4 KiB page is a page fault (about 11 us each in the Zen 5 guest of PERFORMANCE.md). An array that
+// outgrows its slot moves to memory of its own, its elements copied; the slot is then unused.
+// Elements are plain structs of numbers: resize() leaves new ones unwritten.
+
+#include "uninitialised_allocator.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+namespace raylab {
+
+template <typename T> class SlotArray {
+public:
+    SlotArray() = default; // no slot: grows in memory of its own from the start
+    SlotArray(T* slot, std::size_t capacity) : data_(slot), capacity_(capacity) {}
+    // Moved, never copied: a copy would share the slot. One moved from is empty, without a slot.
+    SlotArray(SlotArray&& o) noexcept
+        : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)),
+          capacity_(std::exchange(o.capacity_, 0)), own_(std::move(o.own_)) {}
+    SlotArray& operator=(SlotArray&& o) noexcept {
+        data_ = std::exchange(o.data_, nullptr);
+        size_ = std::exchange(o.size_, 0);
+        capacity_ = std::exchange(o.capacity_, 0);
+        own_ = std::move(o.own_);
+        o.own_.clear();
+        return *this;
+    }
+    SlotArray(const SlotArray&) = delete;
+    SlotArray& operator=(const SlotArray&) = delete;
+
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    // True while the elements are still in the slot given at construction.
+    bool inSlot() const { return own_.empty(); }
+    T* data() { return data_; }
+    const T* data() const { return data_; }
+    T& operator[](std::size_t i) { return data_[i]; }
+    const T& operator[](std::size_t i) const { return data_[i]; }
+    const T* begin() const { return data_; }
+    const T* end() const { return data_ + size_; }
+
+    void resize(std::size_t n) {
+        if (n > capacity_) {
+            grow(n);
+        }
+        size_ = n;
+    }
+    void push_back(const T& value) {
+        if (size_ == capacity_) {
+            grow(size_ + 1);
+        }
+        data_[size_++] = value;
+    }
+
+private:
+    // At least `n` elements, twice the capacity at least (amortised constant push_back).
+    void grow(std::size_t n) {
+        UninitialisedVector<T> bigger(std::max({n, 2 * capacity_, std::size_t{16}}));
+        std::copy(data_, data_ + size_, bigger.begin());
+        own_.swap(bigger); // a vector's move or swap keeps its elements where they are
+        data_ = own_.data();
+        capacity_ = own_.size();
+    }
+
+    T* data_ = nullptr;
+    std::size_t size_ = 0;
+    std::size_t capacity_ = 0;
+    UninitialisedVector<T> own_; // the elements once they outgrew the slot
+};
+
+} // namespace raylab
