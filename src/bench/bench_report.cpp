@@ -175,8 +175,8 @@ void printText(std::ostream& out, const BenchReport& r) {
                               static_cast<double>(std::max<std::size_t>(1, r.triangles)))
         << " B/triangle), " << r.leafReferences << " leaf triangles, build "
         << format("%.1f", r.raylab.buildSeconds * 1e3) << " ms (best of " << r.builds
-        << ", rebuilt in the first build's memory; the first "
-        << format("%.1f", r.raylabFirstBuildSeconds * 1e3) << ")\n";
+        << ", rebuilt in kept memory; the first " << format("%.1f", r.raylabFirstBuildSeconds * 1e3)
+        << ")\n";
     if (r.hasEmbree) {
         printEmbreeText(out, r);
     }
