@@ -239,9 +239,10 @@ TEST(SlotArray, GrowsOutOfItsSlotKeepingItsElements) {
 }
 
 // Leaves of one reference: each subtree makes twice as many nodes as its references, more than
-// its slot holds (bvh_build.cpp, subtreeSlots), and its nodes move out of the slot mid-build.
+// its slot holds (bvh_build.cpp, subtreeSlots; enough triangles for the slots' shared array to
+// take huge pages, as they must to be used), and its nodes move out of the slot mid-build.
 TEST(BvhBuild, SubtreesThatOutgrowTheirSlotsStillBuildTheTree) {
-    const Scene scene = makeTriangleSoup(30000, 0.03f, 16);
+    const Scene scene = makeTriangleSoup(80000, 0.02f, 16);
     BvhBuildOptions options;
     options.simd = false;
     options.maxLeafSize = 1;
@@ -260,6 +261,22 @@ TEST(BvhBuild, SubtreesThatOutgrowTheirSlotsStillBuildTheTree) {
     options.threads = 2;
     expectSameBytes(one, buildBvh(scene, options));
     expectMatchesBruteForce(scene, one, makeRandomRays(800, 17));
+}
+
+// Enough triangles for both of the subtrees' shared arrays to take huge pages (subtreeSlots, 2 MiB
+// of leaf references and more of nodes): the same bytes on any thread count, and rebuilt in the
+// memory of a smaller scene's build.
+TEST(BvhBuild, SubtreesInSharedSlotsGiveTheSameBytes) {
+    const Scene scene = makeTriangleSoup(560000, 0.004f, 18);
+    BvhBuildOptions options;
+    options.threads = 1;
+    const Bvh one = buildBvh(scene, options);
+    options.threads = 2;
+    BvhBuildMemory memory;
+    Bvh bvh;
+    rebuildBvh(makeTriangleSoup(20000, 0.05f, 19), options, memory, bvh);
+    rebuildBvh(scene, options, memory, bvh);
+    expectSameBytes(one, bvh);
 }
 
 TEST(BuildTeam, RunsEveryIndexExactlyOnce) {

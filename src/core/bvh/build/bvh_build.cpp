@@ -195,18 +195,23 @@ void writeLeaves(const Scene& scene, const uint32_t* first, std::size_t count, s
 // [nodes[i], nodes[i + 1]) of one, its leaf references in [leaves[i], leaves[i + 1]) of the
 // other, each slot starting on a 64-byte boundary (no cache line shared by two threads' subtrees).
 // A subtree's leaves hold each of its references once: room() of them at most, which its slot
-// holds. Its nodes are 2 * leaves - 1, about half its references where leaves hold up to 8:
-// their slot holds count + 1 of them, and a subtree of smaller leaves grows out of it (SlotArray).
+// holds. Its nodes are 2 * leaves - 1: where every node of up to 8 references is a leaf
+// (`leavesOfUpTo8`, the 8-wide form's), 0.32-0.37 of its references on the meshes of
+// PERFORMANCE.md (0.41 at most in one subtree), so its slot holds half its references and 16
+// more; otherwise count + 1. Larger slots would cost: every page of the shared array is faulted
+// in, used or not. A subtree that needs more nodes moves them out
+// of its slot (SlotArray).
 struct SubtreeSlots {
     std::vector<std::size_t> nodes{0}, leaves{0};
 };
 
-SubtreeSlots subtreeSlots(const std::vector<BuildTask>& deferred) {
+SubtreeSlots subtreeSlots(const std::vector<BuildTask>& deferred, bool leavesOfUpTo8) {
     constexpr std::size_t kNodesALine = 64 / sizeof(BvhNode), kLeavesALine = 64 / sizeof(uint32_t);
     auto roundUp = [](std::size_t n, std::size_t to) { return (n + to - 1) / to * to; };
     SubtreeSlots slots;
     for (const BuildTask& task : deferred) {
-        slots.nodes.push_back(slots.nodes.back() + roundUp(task.count + 1, kNodesALine));
+        const std::size_t nodes = leavesOfUpTo8 ? task.count / 2 + 16 : task.count + std::size_t{1};
+        slots.nodes.push_back(slots.nodes.back() + roundUp(nodes, kNodesALine));
         slots.leaves.push_back(slots.leaves.back() + roundUp(task.room(), kLeavesALine));
     }
     return slots;
@@ -366,11 +371,16 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
     builder.buildTop(top, root, team, std::max(kMinTaskSize, total / 64), deferred);
 
     // The subtrees, largest first (the order they finish in does not matter), each in its slots
-    // of two arrays shared by them all (subtreeSlots).
+    // of two arrays shared by them all (subtreeSlots) where such an array takes whole huge pages
+    // (2 MiB or more): in smaller ones on the heap, the unused ends of the slots would be faulted
+    // in as well (the thin triangles' first build took 1,070 page faults against 810-900 with
+    // arrays of each subtree's own).
     std::vector<Subtree> subtrees(deferred.size());
-    const SubtreeSlots slots = subtreeSlots(deferred);
-    kept.subtreeNodes.resize(slots.nodes.back());
-    kept.subtreeLeaves.resize(slots.leaves.back());
+    const SubtreeSlots slots = subtreeSlots(deferred, context.leafAtMost >= kLeafMerge);
+    const bool nodesInSlots = slots.nodes.back() * sizeof(BvhNode) >= kHugePageBytes;
+    const bool leavesInSlots = slots.leaves.back() * sizeof(uint32_t) >= kHugePageBytes;
+    kept.subtreeNodes.resize(nodesInSlots ? slots.nodes.back() : 0);
+    kept.subtreeLeaves.resize(leavesInSlots ? slots.leaves.back() : 0);
     std::vector<std::size_t> order(deferred.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -383,10 +393,19 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
         // Built in the job's own Subtree and moved in once: the subtrees lie side by side, and
         // growing them from several threads would share their cache lines.
         Subtree subtree;
-        subtree.nodes = SlotArray<BvhNode>(kept.subtreeNodes.data() + slots.nodes[i],
-                                           slots.nodes[i + 1] - slots.nodes[i]);
-        subtree.leafTriangles = SlotArray<uint32_t>(kept.subtreeLeaves.data() + slots.leaves[i],
-                                                    slots.leaves[i + 1] - slots.leaves[i]);
+        const std::size_t nodeSlot = slots.nodes[i + 1] - slots.nodes[i];
+        const std::size_t leafSlot = slots.leaves[i + 1] - slots.leaves[i];
+        if (nodesInSlots) {
+            subtree.nodes = SlotArray<BvhNode>(kept.subtreeNodes.data() + slots.nodes[i], nodeSlot);
+        } else {
+            subtree.nodes.reserve(nodeSlot);
+        }
+        if (leavesInSlots) {
+            subtree.leafTriangles =
+                SlotArray<uint32_t>(kept.subtreeLeaves.data() + slots.leaves[i], leafSlot);
+        } else {
+            subtree.leafTriangles.reserve(leafSlot);
+        }
         subtree.nodes.resize(1);
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);

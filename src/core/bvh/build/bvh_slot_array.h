@@ -44,6 +44,12 @@ public:
     const T* begin() const { return data_; }
     const T* end() const { return data_ + size_; }
 
+    // Room for n elements at least without moving again.
+    void reserve(std::size_t n) {
+        if (n > capacity_) {
+            grow(n);
+        }
+    }
     void resize(std::size_t n) {
         if (n > capacity_) {
             grow(n);
