@@ -125,8 +125,8 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options = {});
 // program that rebuilds a changing scene. rebuildBvh leaves them allocated, so that the next build
 // of about the same size writes memory already faulted in instead of new pages the system must map
 // and zero (on the Zen 5 guest of PERFORMANCE.md, "Memory and page faults", about a tenth of a
-// 2-thread Sponza build). Empty until a build uses it; then holds bytes(), 128-146 bytes a triangle
-// of the largest scene built with it (the dragon's 113 MB), until destroyed.
+// 2-thread Sponza build). Empty until a build uses it; then holds bytes(), 92-113 bytes a triangle
+// of the largest scene built with it (the dragon's 99 MB), until destroyed.
 class BvhBuildMemory {
 public:
     BvhBuildMemory();

@@ -1,10 +1,11 @@
 #pragma once
-// A growable array in a slot of memory it does not own (internal to core): the build's subtrees
-// each take a part of one array shared by them all, which lies in huge pages where it is large
-// (uninitialised_allocator.h), instead of growing arrays of their own on the heap, whose every new
-// 4 KiB page is a page fault (about 11 us each in the Zen 5 guest of PERFORMANCE.md). An array that
-// outgrows its slot moves to memory of its own, its elements copied; the slot is then unused.
-// Elements are plain structs of numbers: resize() leaves new ones unwritten.
+// A growable array in a slot of memory it does not own (internal to core): where the build's
+// subtrees together fill whole huge pages (bvh_build.cpp), each takes a part of one array shared
+// by them all (uninitialised_allocator.h) instead of growing an array of its own on the heap,
+// whose every new 4 KiB page is a page fault (about 11 us each in the Zen 5 guest of
+// PERFORMANCE.md). An array that outgrows its slot, or has none, grows in memory of its own, its
+// elements copied; the slot is then unused. Elements are plain structs of numbers: resize() leaves
+// new ones unwritten.
 
 #include "uninitialised_allocator.h"
 
