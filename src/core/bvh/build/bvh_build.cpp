@@ -199,8 +199,7 @@ void writeLeaves(const Scene& scene, const uint32_t* first, std::size_t count, s
 // (`leavesOfUpTo8`, the 8-wide form's), 0.32-0.37 of its references on the meshes of
 // PERFORMANCE.md (0.41 at most in one subtree), so its slot holds half its references and 16
 // more; otherwise count + 1. Larger slots would cost: every page of the shared array is faulted
-// in, used or not. A subtree that needs more nodes moves them out
-// of its slot (SlotArray).
+// in, used or not. A subtree that needs more nodes moves them out of its slot (SlotArray).
 struct SubtreeSlots {
     std::vector<std::size_t> nodes{0}, leaves{0};
 };
