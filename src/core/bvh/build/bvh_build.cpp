@@ -271,6 +271,18 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
     bvh.leafReferences = layout.records;
 }
 
+// A subtree's array: its slot [first, end) of `shared`, or, where `shared` is empty (too small
+// for huge pages), memory of its own with room for as many elements.
+template <typename T>
+SlotArray<T> subtreeArray(UninitialisedVector<T>& shared, std::size_t first, std::size_t end) {
+    if (shared.empty()) {
+        SlotArray<T> own;
+        own.reserve(end - first);
+        return own;
+    }
+    return SlotArray<T>(shared.data() + first, end - first);
+}
+
 // Empties bvh as a fresh Bvh is, its arrays keeping their capacity.
 void clearKeepingArrays(Bvh& bvh) {
     auto nodes = std::move(bvh.nodes);
@@ -376,10 +388,10 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
     // arrays of each subtree's own).
     std::vector<Subtree> subtrees(deferred.size());
     const SubtreeSlots slots = subtreeSlots(deferred, context.leafAtMost >= kLeafMerge);
-    const bool nodesInSlots = slots.nodes.back() * sizeof(BvhNode) >= kHugePageBytes;
-    const bool leavesInSlots = slots.leaves.back() * sizeof(uint32_t) >= kHugePageBytes;
-    kept.subtreeNodes.resize(nodesInSlots ? slots.nodes.back() : 0);
-    kept.subtreeLeaves.resize(leavesInSlots ? slots.leaves.back() : 0);
+    const auto inHugePages = [](std::size_t bytes) { return bytes >= kHugePageBytes; };
+    const std::size_t nodes = slots.nodes.back(), leaves = slots.leaves.back();
+    kept.subtreeNodes.resize(inHugePages(nodes * sizeof(BvhNode)) ? nodes : 0);
+    kept.subtreeLeaves.resize(inHugePages(leaves * sizeof(uint32_t)) ? leaves : 0);
     std::vector<std::size_t> order(deferred.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -392,19 +404,9 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
         // Built in the job's own Subtree and moved in once: the subtrees lie side by side, and
         // growing them from several threads would share their cache lines.
         Subtree subtree;
-        const std::size_t nodeSlot = slots.nodes[i + 1] - slots.nodes[i];
-        const std::size_t leafSlot = slots.leaves[i + 1] - slots.leaves[i];
-        if (nodesInSlots) {
-            subtree.nodes = SlotArray<BvhNode>(kept.subtreeNodes.data() + slots.nodes[i], nodeSlot);
-        } else {
-            subtree.nodes.reserve(nodeSlot);
-        }
-        if (leavesInSlots) {
-            subtree.leafTriangles =
-                SlotArray<uint32_t>(kept.subtreeLeaves.data() + slots.leaves[i], leafSlot);
-        } else {
-            subtree.leafTriangles.reserve(leafSlot);
-        }
+        subtree.nodes = subtreeArray(kept.subtreeNodes, slots.nodes[i], slots.nodes[i + 1]);
+        subtree.leafTriangles =
+            subtreeArray(kept.subtreeLeaves, slots.leaves[i], slots.leaves[i + 1]);
         subtree.nodes.resize(1);
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);

@@ -52,9 +52,7 @@ public:
         }
     }
     void resize(std::size_t n) {
-        if (n > capacity_) {
-            grow(n);
-        }
+        reserve(n);
         size_ = n;
     }
     void push_back(const T& value) {
