@@ -180,6 +180,14 @@ void printText(std::ostream& out, const BenchReport& r) {
     if (r.hasEmbree) {
         printEmbreeText(out, r);
     }
+    if (!r.memoryAccessMonitors.empty()) {
+        out << "note: the kernel's DAMON samples memory accesses here (";
+        for (std::size_t i = 0; i < r.memoryAccessMonitors.size(); ++i) {
+            out << (i ? ", " : "") << r.memoryAccessMonitors[i];
+        }
+        out << "): on a virtual machine it slowed some frames up to 3x (PERFORMANCE.md, \"Machine "
+               "and conditions\"); compare several runs\n";
+    }
     printHeader(out, r);
     if (r.packets) {
         printRow(out, "raylab (packets)", r.raylabPackets);
@@ -273,7 +281,11 @@ void printJson(std::ostream& out, const BenchReport& r) {
         << ", \"threads\": " << r.threads << ", \"frames\": " << r.frames
         << ", \"builds\": " << r.builds << ", \"primary_rays\": " << r.primaryRays
         << ", \"shadow_rays\": " << r.shadowRays << ", \"bounce_rays\": " << r.bounceRays
-        << ",\n \"raylab\": ";
+        << ", \"memory_access_monitors\": [";
+    for (std::size_t i = 0; i < r.memoryAccessMonitors.size(); ++i) {
+        out << (i ? ", " : "") << quoted(r.memoryAccessMonitors[i]);
+    }
+    out << "],\n \"raylab\": ";
     jsonFiguresOpen(out, r.raylab);
     out << ", \"first_build_ms\": " << format("%.3f", r.raylabFirstBuildSeconds * 1e3) << "}";
     out << ", \"raylab_path\": " << quoted(r.raylabPath)

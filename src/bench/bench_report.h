@@ -85,6 +85,9 @@ struct BenchReport {
     bool passes = false;
     PassFigures labPasses, pathPasses; // 1 sample a pass, as the viewer renders
     PassFigures labPassesOfMany;       // kSamplesPerPass samples a pass, as raylab-render does
+    // The kernel's DAMON threads running during the run (bench_system.h): where there are any,
+    // the report says that its figures may swing from frame to frame.
+    std::vector<std::string> memoryAccessMonitors;
 };
 
 // The fastest Embree call on 1 thread (one = true) or on all threads.

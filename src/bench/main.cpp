@@ -19,6 +19,7 @@
 #include "bench_checks.h"
 #include "bench_rays.h"
 #include "bench_report.h"
+#include "bench_system.h"
 #include "bench_timing.h"
 #include "core/bvh/bvh.h"
 #include "core/bvh/bvh_packet.h"
@@ -144,6 +145,7 @@ int run(int argc, char** argv) {
     report.width = cl.settings.width;
     report.height = cl.settings.height;
     report.threads = threads;
+    report.memoryAccessMonitors = memoryAccessMonitors();
     report.frames = frames;
 
     // The BVHs: raylab's and Embree's builds in turns, each timed from the release of the

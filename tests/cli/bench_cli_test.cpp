@@ -5,6 +5,7 @@
 // one line on stderr and exit code 2. No test asserts a speed: only that figures exist and are
 // positive, and how they relate by definition.
 
+#include "bench/bench_system.h"
 #include "test_assets.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace raylab {
 namespace {
@@ -170,6 +172,13 @@ TEST(BenchCli, TextNamesTheBlocks) {
     EXPECT_NE(r.out.find("raylab (blocks)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("answers differing from packets: 0"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("blocks through frustum candidates: camera"), std::string::npos) << r.out;
+    // A note names the kernel's DAMON threads where they run, and is absent where none does.
+    const std::vector<std::string> monitors = bench::memoryAccessMonitors();
+    const std::size_t note = r.out.find("note: the kernel's DAMON");
+    EXPECT_EQ(note != std::string::npos, !monitors.empty()) << r.out;
+    for (const std::string& name : monitors) {
+        EXPECT_NE(r.out.find(name, note), std::string::npos) << r.out;
+    }
 }
 
 TEST(BenchCli, BunnyBlocksTakeBothPathsAndMatchPackets) {
@@ -279,6 +288,8 @@ TEST(BenchCli, PrimaryWorkloadReportsEveryEmbreeCall) {
     EXPECT_EQ(j.at("primary_rays").get<int>(), 38 * 22);
     // The box's builds take microseconds: the build times are the best of the most builds.
     EXPECT_EQ(j.at("builds").get<int>(), 20);
+    // The kernel's DAMON threads, as /proc lists them (an empty list where none runs).
+    EXPECT_EQ(j.at("memory_access_monitors"), nlohmann::json(bench::memoryAccessMonitors()));
     // The keys scripts read, unchanged.
     expectFigures(j.at("raylab"), rays, "raylab");
     EXPECT_GT(j.at("bvh").at("memory_bytes").get<std::size_t>(), 0u);
