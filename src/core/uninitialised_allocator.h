@@ -9,8 +9,8 @@
 // at once instead of in 512 pieces, and is returned to the system when the array is freed. Page
 // faults are dear in a virtual machine (about 11 us each in the Zen 5 guest of PERFORMANCE.md,
 // "On the Zen 5"), and a build writes tens of megabytes of new arrays: a first build of the
-// dragon took 7,000 page faults with them, 26,000 without (3,800 since its subtrees share arrays
-// too: bvh_build.cpp). Smaller arrays come from the heap.
+// dragon took 7,000 page faults with them, 26,000 without (220 since its subtrees and the 8-wide
+// form's share arrays too: bvh_slot_array.h). Smaller arrays come from the heap.
 
 #include "huge_pages.h"
 

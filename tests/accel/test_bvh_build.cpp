@@ -7,6 +7,7 @@
 #include "accel_check.h"
 #include "accel_scenes.h"
 #include "core/bvh/build/bvh_build_clip.h"
+#include "core/bvh/build/bvh_build_memory.h"
 #include "core/bvh/build/bvh_build_team.h"
 #include "core/bvh/build/bvh_clip.h"
 #include "core/bvh/build/bvh_slot_array.h"
@@ -263,9 +264,10 @@ TEST(BvhBuild, SubtreesThatOutgrowTheirSlotsStillBuildTheTree) {
     expectMatchesBruteForce(scene, one, makeRandomRays(800, 17));
 }
 
-// Enough triangles for both of the subtrees' shared arrays to take huge pages (subtreeSlots, 2 MiB
-// of leaf references and more of nodes): the same bytes on any thread count, and rebuilt in the
-// memory of a smaller scene's build.
+// Enough triangles for the subtrees' two shared arrays (subtreeSlots, 2 MiB of leaf references
+// and more of nodes) and the wide subtrees' two (bvh_collapse.cpp, partSlots) to take huge pages,
+// so that every part is built in its slots: the same bytes on any thread count, and rebuilt in
+// the memory of a smaller scene's build, whose parts had none.
 TEST(BvhBuild, SubtreesInSharedSlotsGiveTheSameBytes) {
     const Scene scene = makeTriangleSoup(560000, 0.004f, 18);
     BvhBuildOptions options;
@@ -275,7 +277,11 @@ TEST(BvhBuild, SubtreesInSharedSlotsGiveTheSameBytes) {
     BvhBuildMemory memory;
     Bvh bvh;
     rebuildBvh(makeTriangleSoup(20000, 0.05f, 19), options, memory, bvh);
+    const BvhBuildMemory::Arrays& kept = memory.arrays();
+    EXPECT_TRUE(kept.subtreeNodes.empty() && kept.collapse.nodes.empty()); // too small
     rebuildBvh(scene, options, memory, bvh);
+    EXPECT_FALSE(kept.subtreeNodes.empty() || kept.subtreeLeaves.empty());
+    EXPECT_FALSE(kept.collapse.nodes.empty() || kept.collapse.leaves.empty());
     expectSameBytes(one, bvh);
 }
 

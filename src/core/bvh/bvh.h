@@ -120,13 +120,14 @@ bool bvhSimdSupported();
 Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options = {});
 
 // The working arrays of BVH builds (the references and their spare room, the subtrees' nodes and
-// leaves, the binary nodes when only the 8-wide form is kept, the collapse's inputs), kept from one
-// build to the next by a caller that builds again and again: raylab-bench's repeated builds, a
-// program that rebuilds a changing scene. rebuildBvh leaves them allocated, so that the next build
-// of about the same size writes memory already faulted in instead of new pages the system must map
-// and zero (on the Zen 5 guest of PERFORMANCE.md, "Memory and page faults", about a tenth of a
-// 2-thread Sponza build). Empty until a build uses it; then holds bytes(), 92-113 bytes a triangle
-// of the largest scene built with it (the dragon's 99 MB), until destroyed.
+// leaves, the binary nodes when only the 8-wide form is kept, the collapse's inputs and its wide
+// subtrees' nodes and leaves), kept from one build to the next by a caller that builds again and
+// again: raylab-bench's repeated builds, a program that rebuilds a changing scene. rebuildBvh
+// leaves them allocated, so that the next build of about the same size writes memory already
+// faulted in instead of new pages the system must map and zero (on the Zen 5 guest of
+// PERFORMANCE.md, "Memory and page faults", about a tenth of a 2-thread Sponza build). Empty until
+// a build uses it; then holds bytes(), 92-139 bytes a triangle of the largest scene built with it
+// (the dragon's 121 MB), until destroyed.
 class BvhBuildMemory {
 public:
     BvhBuildMemory();

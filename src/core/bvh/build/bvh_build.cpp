@@ -271,18 +271,6 @@ void assemble(const Scene& scene, const Subtree& top, const std::vector<BuildTas
     bvh.leafReferences = layout.records;
 }
 
-// A subtree's array: its slot [first, end) of `shared`, or, where `shared` is empty (too small
-// for huge pages), memory of its own with room for as many elements.
-template <typename T>
-SlotArray<T> subtreeArray(UninitialisedVector<T>& shared, std::size_t first, std::size_t end) {
-    if (shared.empty()) {
-        SlotArray<T> own;
-        own.reserve(end - first);
-        return own;
-    }
-    return SlotArray<T>(shared.data() + first, end - first);
-}
-
 // Empties bvh as a fresh Bvh is, its arrays keeping their capacity.
 void clearKeepingArrays(Bvh& bvh) {
     auto nodes = std::move(bvh.nodes);
@@ -382,16 +370,11 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
     builder.buildTop(top, root, team, std::max(kMinTaskSize, total / 64), deferred);
 
     // The subtrees, largest first (the order they finish in does not matter), each in its slots
-    // of two arrays shared by them all (subtreeSlots) where such an array takes whole huge pages
-    // (2 MiB or more): in smaller ones on the heap, the unused ends of the slots would be faulted
-    // in as well (the thin triangles' first build took 1,070 page faults against 810-900 with
-    // arrays of each subtree's own).
+    // of two arrays shared by them all (subtreeSlots, sizeSharedSlots).
     std::vector<Subtree> subtrees(deferred.size());
     const SubtreeSlots slots = subtreeSlots(deferred, context.leafAtMost >= kLeafMerge);
-    const auto inHugePages = [](std::size_t bytes) { return bytes >= kHugePageBytes; };
-    const std::size_t nodes = slots.nodes.back(), leaves = slots.leaves.back();
-    kept.subtreeNodes.resize(inHugePages(nodes * sizeof(BvhNode)) ? nodes : 0);
-    kept.subtreeLeaves.resize(inHugePages(leaves * sizeof(uint32_t)) ? leaves : 0);
+    sizeSharedSlots(kept.subtreeNodes, slots.nodes.back());
+    sizeSharedSlots(kept.subtreeLeaves, slots.leaves.back());
     std::vector<std::size_t> order(deferred.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -404,9 +387,8 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
         // Built in the job's own Subtree and moved in once: the subtrees lie side by side, and
         // growing them from several threads would share their cache lines.
         Subtree subtree;
-        subtree.nodes = subtreeArray(kept.subtreeNodes, slots.nodes[i], slots.nodes[i + 1]);
-        subtree.leafTriangles =
-            subtreeArray(kept.subtreeLeaves, slots.leaves[i], slots.leaves[i + 1]);
+        subtree.nodes = slotIn(kept.subtreeNodes, slots.nodes[i], slots.nodes[i + 1]);
+        subtree.leafTriangles = slotIn(kept.subtreeLeaves, slots.leaves[i], slots.leaves[i + 1]);
         subtree.nodes.resize(1);
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);
@@ -415,7 +397,8 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
     UninitialisedVector<LeafSpan>& spans = kept.spans;
     assemble(scene, top, deferred, subtrees, pad, wide, team, bvh, sceneIndices, spans);
     std::vector<Subtree>().swap(subtrees);
-    if (wide && !buildWideBvh(bvh, scene, sceneIndices, spans, options.keepBinaryNodes, team)) {
+    if (wide && !buildWideBvh(bvh, scene, sceneIndices, spans, options.keepBinaryNodes, team,
+                              kept.collapse)) {
         // The tree does not fit the wide form: the binary form keeps its own triangles.
         bvh.triangles.resize(sceneIndices.size());
         for (std::size_t i = 0; i < sceneIndices.size(); ++i) {

@@ -10,13 +10,17 @@ void BvhBuildMemory::Arrays::clear() {
     spans.clear();
     subtreeNodes.clear();
     subtreeLeaves.clear();
+    collapse.nodes.clear();
+    collapse.leaves.clear();
 }
 
 std::size_t BvhBuildMemory::Arrays::bytes() const {
     return (records.capacity() + spare.capacity()) * sizeof(PrimRecord) +
            binaryNodes.capacity() * sizeof(BvhNode) + sceneIndices.capacity() * sizeof(uint32_t) +
            spans.capacity() * sizeof(LeafSpan) + subtreeNodes.capacity() * sizeof(BvhNode) +
-           subtreeLeaves.capacity() * sizeof(uint32_t);
+           subtreeLeaves.capacity() * sizeof(uint32_t) +
+           collapse.nodes.capacity() * sizeof(BvhWideNode) +
+           collapse.leaves.capacity() * sizeof(LeafPlacement);
 }
 
 BvhBuildMemory::BvhBuildMemory() : arrays_(std::make_unique<Arrays>()) {}

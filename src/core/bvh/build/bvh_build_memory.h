@@ -19,6 +19,7 @@ struct BvhBuildMemory::Arrays {
     // The subtrees' nodes and leaf references, each subtree in slots of its own (bvh_build.cpp)
     UninitialisedVector<BvhNode> subtreeNodes;
     UninitialisedVector<uint32_t> subtreeLeaves;
+    CollapseMemory collapse; // the 8-wide form's subtrees'
 
     void clear(); // every array empty, its capacity kept
     std::size_t bytes() const;

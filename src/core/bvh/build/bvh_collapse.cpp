@@ -21,6 +21,8 @@
 
 #include "bvh/build/bvh_collapse.h"
 
+#include "bvh/build/bvh_slot_array.h"
+
 #include <algorithm>
 #include <vector>
 
@@ -40,23 +42,12 @@ struct PendingPart {
     int depth = 0; // of its root in the whole wide tree
 };
 
-// A wide leaf: child `slot` of the part's node `node`, whose triangles go to lanes
-// [lane, lane + triangles.count) counted from the start of the part's block `block` (running on
-// into the next block past lane 7).
-struct LeafPlacement {
-    LeafSpan triangles;
-    uint32_t node = 0; // in the part's nodes
-    uint32_t slot = 0;
-    uint32_t block = 0; // in the part's blocks
-    uint32_t lane = 0;
-};
-
 // A part of the wide tree: its nodes in its own array (inner children index them) and its
 // blocks, counted in the part (leaves index them there) until the part is placed at firstBlock
 // of the BVH's array.
 struct WidePart {
-    std::vector<BvhWideNode> nodes; // nodes[0] is its root
-    std::vector<LeafPlacement> leaves;
+    SlotArray<BvhWideNode> nodes; // nodes[0] is its root
+    SlotArray<LeafPlacement> leaves;
     std::vector<uint8_t> lanesUsed; // per block of the part: lanes [0, lanesUsed) hold leaves
     uint32_t firstBlock = 0;
     int depth = 0;         // deepest level reached, counted in the whole tree
@@ -92,7 +83,7 @@ public:
         : tree_(tree), part_(part), deferBelow_(deferBelow), deferred_(deferred) {}
 
     void run(uint32_t binary, int depth) {
-        part_.nodes.emplace_back();
+        part_.nodes.resize(1); // written by fill(), as every node
         std::vector<Pending> stack{{binary, 0, depth}};
         while (!stack.empty()) {
             const Pending p = stack.back();
@@ -193,7 +184,7 @@ private:
                 continue;
             }
             const auto child = static_cast<uint32_t>(part_.nodes.size());
-            part_.nodes.emplace_back();
+            part_.nodes.resize(child + std::size_t{1});
             wide.child[s] = child;
             stack.push_back({slots[s], child, p.depth + 1});
         }
@@ -298,6 +289,33 @@ void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* block
     }
 }
 
+// Where each wide subtree's arrays go in the two arrays they share (CollapseMemory): part i's
+// nodes in [nodes[i], nodes[i + 1]) of one, its leaves in [leaves[i], leaves[i + 1]) of the
+// other, each slot starting on a 64-byte boundary (no cache line shared by two threads' parts).
+// Sized for n leaf references: a sixteenth of them and 16 more nodes, a quarter and 16 more
+// leaves. Measured per part on the meshes of PERFORMANCE.md: 0.033-0.036 nodes and 0.14-0.16
+// leaves a reference over all parts, 0.048-0.071 and 0.18-0.29 at most in one (a small part of
+// Sponza's). Larger slots would cost: every page of the shared arrays is faulted in, used or
+// not. A part that needs more moves its array out of its slot (SlotArray).
+struct PartSlots {
+    std::vector<std::size_t> nodes{0}, leaves{0};
+};
+
+PartSlots partSlots(const std::vector<PendingPart>& pending,
+                    const UninitialisedVector<LeafSpan>& spans) {
+    static_assert(sizeof(BvhWideNode) % 64 == 0 && 64 * 7 == 16 * sizeof(LeafPlacement));
+    constexpr std::size_t kLeavesInLines = 16; // 7 cache lines
+    PartSlots slots;
+    for (const PendingPart& part : pending) {
+        const std::size_t references = spans[part.binary].count;
+        const std::size_t leaves = references / 4 + 16;
+        slots.nodes.push_back(slots.nodes.back() + references / 16 + 16);
+        slots.leaves.push_back(slots.leaves.back() +
+                               (leaves + kLeavesInLines - 1) / kLeavesInLines * kLeavesInLines);
+    }
+    return slots;
+}
+
 } // namespace
 
 void spanBinaryNodes(const BvhNode* nodes, std::size_t first, std::size_t last, LeafSpan* spans) {
@@ -317,7 +335,7 @@ void spanBinaryNodes(const BvhNode* nodes, std::size_t first, std::size_t last, 
 
 bool buildWideBvh(Bvh& bvh, const Scene& scene, const UninitialisedVector<uint32_t>& leafScene,
                   const UninitialisedVector<LeafSpan>& spans, bool pointBinaryLeaves,
-                  BuildTeam& team) {
+                  BuildTeam& team, CollapseMemory& memory) {
     bvh.wideNodes.clear();
     bvh.triangleBlocks.clear();
     if (bvh.nodes.empty()) {
@@ -329,9 +347,14 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const UninitialisedVector<uint32
     const uint32_t deferBelow =
         std::max(kMinPartTriangles, static_cast<uint32_t>(leafScene.size() / 128));
     Collapser(tree, top, deferBelow, &pending).run(0, 1);
+    const PartSlots slots = partSlots(pending, spans);
+    sizeSharedSlots(memory.nodes, slots.nodes.back());
+    sizeSharedSlots(memory.leaves, slots.leaves.back());
     std::vector<WidePart> parts(pending.size());
     team.forEach(parts.size(), [&](std::size_t i) {
         WidePart part; // moved in once: the parts' vectors would share cache lines
+        part.nodes = slotIn(memory.nodes, slots.nodes[i], slots.nodes[i + 1]);
+        part.leaves = slotIn(memory.leaves, slots.leaves[i], slots.leaves[i + 1]);
         part.depth = pending[i].depth;
         Collapser(tree, part, 0, nullptr).run(pending[i].binary, pending[i].depth);
         parts[i] = std::move(part);
