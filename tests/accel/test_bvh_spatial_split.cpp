@@ -195,6 +195,74 @@ TEST(BvhSpatialSplit, CutPartsKeepTheirSceneIndexAndAZeroBesideTheirUpperCorner)
     EXPECT_EQ(right.upper.y, 0.5f); // the triangle's edge at x = -0.75
 }
 
+// The top's spatial splits count each chunk's sides first and write them only if the split is
+// kept (bvh_build_top.cpp): countSpatialSplit must give the sizes and bounds applySpatialSplit
+// gives, chunk by chunk, and the chunks' parts written side by side must be the parts of the
+// whole node, for planes through the scene, on its vertices and outside it.
+TEST(BvhSpatialSplit, CountingGivesTheSidesThatWritingMakes) {
+    const Scene scene = makeRoom(3000, 31);
+    RecordVector records;
+    Aabb sceneBox;
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+        const Triangle& t = scene.triangles[i];
+        const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
+        const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
+        records.push_back({lower, static_cast<uint32_t>(i), upper, 0.0f});
+        sceneBox.extend(lower);
+        sceneBox.extend(upper);
+    }
+    const auto sameBounds = [](const RecordBounds& a, const RecordBounds& b) {
+        const Aabb boxes[2] = {a.box.toAabb(), b.box.toAabb()};
+        const Aabb centres[2] = {a.centres.toAabb(), b.centres.toAabb()};
+        return std::memcmp(&boxes[0], &boxes[1], sizeof(Aabb)) == 0 &&
+               std::memcmp(&centres[0], &centres[1], sizeof(Aabb)) == 0;
+    };
+    const std::size_t n = records.size();
+    int crossed = 0; // planes that cut some reference in two
+    for (int axis = 0; axis < 3; ++axis) {
+        const float lower = sceneBox.lower[axis], extent = sceneBox.upper[axis] - lower;
+        for (const float position :
+             {lower - 1.0f, lower + 0.31f * extent, lower + 0.5f * extent, records[7].lower[axis],
+              scene.triangles[n - 1].v1[axis], sceneBox.upper[axis] + 1.0f}) {
+            SpatialSplit split;
+            split.axis = axis;
+            split.position = position;
+            SCOPED_TRACE(testing::Message() << "axis " << axis << " plane " << position);
+            RecordVector wholeLeft(n), wholeRight(n);
+            RecordBounds wholeLeftBounds, wholeRightBounds;
+            const SpatialSides whole = applySpatialSplit(
+                scene, records.data(), records.data() + n, split, 1e-6f, wholeLeft.data(),
+                wholeRight.data(), wholeLeftBounds, wholeRightBounds);
+            crossed += whole.left + whole.right > n ? 1 : 0;
+            RecordVector left(n), right(n);
+            std::size_t leftAt = 0, rightAt = 0;
+            const std::size_t cuts[] = {0, 1, n / 3, n / 3 + 1, n - 5, n};
+            for (std::size_t c = 0; c + 1 < std::size(cuts); ++c) {
+                const PrimRecord *first = records.data() + cuts[c],
+                                 *last = records.data() + cuts[c + 1];
+                RecordBounds countedLeft, countedRight, writtenLeft, writtenRight;
+                const SpatialSides counted =
+                    countSpatialSplit(scene, first, last, split, 1e-6f, countedLeft, countedRight);
+                const SpatialSides written =
+                    applySpatialSplit(scene, first, last, split, 1e-6f, left.data() + leftAt,
+                                      right.data() + rightAt, writtenLeft, writtenRight);
+                ASSERT_EQ(counted.left, written.left) << "chunk " << c;
+                ASSERT_EQ(counted.right, written.right) << "chunk " << c;
+                EXPECT_TRUE(sameBounds(countedLeft, writtenLeft)) << "chunk " << c;
+                EXPECT_TRUE(sameBounds(countedRight, writtenRight)) << "chunk " << c;
+                leftAt += written.left;
+                rightAt += written.right;
+            }
+            ASSERT_EQ(leftAt, whole.left);
+            ASSERT_EQ(rightAt, whole.right);
+            EXPECT_EQ(std::memcmp(left.data(), wholeLeft.data(), leftAt * sizeof(PrimRecord)), 0);
+            EXPECT_EQ(std::memcmp(right.data(), wholeRight.data(), rightAt * sizeof(PrimRecord)),
+                      0);
+        }
+    }
+    EXPECT_GT(crossed, 3); // the room's quads cross most planes through it
+}
+
 // binSpatial adds each reference to two ranges of bins and cuts the ranges' unions to the
 // slabs only at the end; its bins must equal those of references cut to each bin's slab and
 // added one by one, for references crossing any number of bins (1 to all 16), lying on planes

@@ -177,19 +177,24 @@ SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int a
     return best;
 }
 
-SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
-                               const SpatialSplit& split, float slack, PrimRecord* left,
-                               PrimRecord* right, RecordBounds& leftBounds,
-                               RecordBounds& rightBounds) {
+namespace {
+
+// applySpatialSplit, or with kWrite false countSpatialSplit: the same decisions either way.
+template <bool kWrite>
+SpatialSides spatialSides(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                          const SpatialSplit& split, float slack, PrimRecord* left,
+                          PrimRecord* right, RecordBounds& leftBounds, RecordBounds& rightBounds) {
     const int a = split.axis;
     // The sides' ends and bounds are kept in registers, stored once.
-    PrimRecord* l = left;
-    PrimRecord* r = right;
+    std::size_t l = 0, r = 0;
     RecordBounds lb = leftBounds, rb = rightBounds;
-    const auto put = [](PrimRecord*& to, RecordBounds& bounds, __m128 lo, __m128 hi) {
-        _mm_storeu_ps(&to->lower.x, lo);
-        _mm_storeu_ps(&to->upper.x, hi);
-        ++to;
+    const auto put = [](PrimRecord* to, std::size_t& n, RecordBounds& bounds, __m128 lo,
+                        __m128 hi) {
+        if constexpr (kWrite) {
+            _mm_storeu_ps(&to[n].lower.x, lo);
+            _mm_storeu_ps(&to[n].upper.x, hi);
+        }
+        ++n;
         bounds.add(lo, hi);
     };
     // Lane 3 of a record's lower corner holds its scene index: a part keeps the reference's
@@ -198,26 +203,45 @@ SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, cons
     for (const PrimRecord* p = first; p != last; ++p) {
         const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
         if (p->upper[a] <= split.position) {
-            put(l, lb, lo, hi);
+            put(left, l, lb, lo, hi);
         } else if (p->lower[a] >= split.position) {
-            put(r, rb, lo, hi);
+            put(right, r, rb, lo, hi);
         } else {
             const CrossingParts parts =
                 cutCrossing(scene.triangles[p->sceneIndex], lo, hi, a, split.position, slack);
             if (!parts.leftEmpty) {
-                put(l, lb, withLane(indexLane, lo, parts.left.lower), xyzOf(parts.left.upper));
+                put(left, l, lb, withLane(indexLane, lo, parts.left.lower),
+                    xyzOf(parts.left.upper));
             }
             if (!parts.rightEmpty) {
-                put(r, rb, withLane(indexLane, lo, parts.right.lower), xyzOf(parts.right.upper));
+                put(right, r, rb, withLane(indexLane, lo, parts.right.lower),
+                    xyzOf(parts.right.upper));
             }
             if (parts.leftEmpty && parts.rightEmpty) {
-                put(l, lb, lo, hi); // only if rounding lost the part: keep it whole
+                put(left, l, lb, lo, hi); // only if rounding lost the part: keep it whole
             }
         }
     }
     leftBounds = lb;
     rightBounds = rb;
-    return {static_cast<std::size_t>(l - left), static_cast<std::size_t>(r - right)};
+    return {l, r};
+}
+
+} // namespace
+
+SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                               const SpatialSplit& split, float slack, PrimRecord* left,
+                               PrimRecord* right, RecordBounds& leftBounds,
+                               RecordBounds& rightBounds) {
+    return spatialSides<true>(scene, first, last, split, slack, left, right, leftBounds,
+                              rightBounds);
+}
+
+SpatialSides countSpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                               const SpatialSplit& split, float slack, RecordBounds& leftBounds,
+                               RecordBounds& rightBounds) {
+    return spatialSides<false>(scene, first, last, split, slack, nullptr, nullptr, leftBounds,
+                               rightBounds);
 }
 
 } // namespace raylab

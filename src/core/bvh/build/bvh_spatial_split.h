@@ -75,4 +75,10 @@ SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, cons
                                PrimRecord* right, RecordBounds& leftBounds,
                                RecordBounds& rightBounds);
 
+// What applySpatialSplit would write, without writing it: the sides' sizes, and their records
+// added to the sides' bounds.
+SpatialSides countSpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
+                               const SpatialSplit& split, float slack, RecordBounds& leftBounds,
+                               RecordBounds& rightBounds);
+
 } // namespace raylab
