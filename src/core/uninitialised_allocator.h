@@ -1,7 +1,7 @@
 #pragma once
 // An allocator for arrays whose every element is written right after they are sized (the build's
-// references and nodes, the wide BVH's nodes and blocks): resize() leaves new elements
-// default-initialised (for plain structs of numbers, not written), so that the memory is first
+// references and nodes, the wide BVH's nodes and blocks): resize() leaves new elements of plain
+// structs of numbers unwritten, their default member values included, so that the memory is first
 // touched, and faulted in, by the threads that fill it, and written once rather than twice.
 //
 // Arrays of kHugePageBytes (2 MiB) or more get memory of their own in transparent huge pages
@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <memory>
 #include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -42,9 +43,14 @@ template <typename T> struct UninitialisedAllocator {
         freeHugePageArray(data, n * sizeof(T));
     }
 
+    // Without arguments, a trivially copyable element is left as its memory holds it, even one
+    // with default member values (BvhNode, LeafSpan): such an element is a plain struct of
+    // numbers, an implicit-lifetime type, which the allocation itself brings into being.
     template <typename U, typename... Args> void construct(U* p, Args&&... args) {
         if constexpr (sizeof...(Args) == 0) {
-            ::new (static_cast<void*>(p)) U;
+            if constexpr (!std::is_trivially_copyable_v<U>) {
+                ::new (static_cast<void*>(p)) U;
+            }
         } else {
             ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
         }

@@ -1,5 +1,6 @@
 // The build's large arrays (core/huge_pages.h, core/uninitialised_allocator.h): memory of their
-// own on a 2 MiB boundary, advised transparent huge pages, usable over every byte asked for.
+// own on a 2 MiB boundary, advised transparent huge pages, usable over every byte asked for; new
+// elements left unwritten.
 
 #include "huge_pages.h"
 #include "uninitialised_allocator.h"
@@ -116,6 +117,37 @@ TEST(UninitialisedVector, KeepsItsElementsAcrossTheHugePageThreshold) {
     EXPECT_EQ(copy[99], static_cast<uint32_t>(99 * 2654435761u));
     UninitialisedVector<uint32_t>().swap(values);
     EXPECT_EQ(values.capacity(), 0u);
+}
+
+// A plain struct with default member values, as the build's nodes are (BvhNode).
+struct NodeLike {
+    float lower = 0.0f;
+    uint32_t index = 0;
+    uint32_t count = 0;
+};
+
+// resize() writes nothing into the new elements, not even default member values: an array that
+// is cleared and sized again, in the same memory, still holds what was written before, on the
+// heap and in huge pages alike (the build writes each element once, on the thread that fills
+// it).
+TEST(UninitialisedVector, ResizeLeavesPlainStructsUnwrittenDefaultValuesIncluded) {
+    for (const std::size_t count : {std::size_t{1000}, 3 * kHugePageBytes / sizeof(NodeLike)}) {
+        UninitialisedVector<NodeLike> nodes(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            nodes[i] = NodeLike{1.5f, static_cast<uint32_t>(i), 7};
+        }
+        const NodeLike* data = nodes.data();
+        nodes.clear();
+        nodes.resize(count);
+        ASSERT_EQ(nodes.data(), data); // the same memory
+        std::size_t written = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            written += nodes[i].index != i || nodes[i].count != 7 || nodes[i].lower != 1.5f;
+        }
+        EXPECT_EQ(written, 0u) << count << " elements";
+        nodes.push_back(NodeLike{}); // a value given is written as given
+        EXPECT_EQ(nodes.back().count, 0u);
+    }
 }
 
 } // namespace

@@ -121,6 +121,8 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
             const BuildTask task = stack.back();
             stack.pop_back();
             if (task.count <= deferBelow && task.count > static_cast<uint32_t>(maxLeaf_)) {
+                // Not a leaf, until its subtree's root takes the slot (bvh_build.cpp, assemble).
+                out.nodes[task.slot] = BvhNode{};
                 deferred.push_back(task);
                 continue;
             }
