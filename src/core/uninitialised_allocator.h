@@ -4,7 +4,7 @@
 // structs of numbers unwritten, their default member values included, so that the memory is first
 // touched, and faulted in, by the threads that fill it, and written once rather than twice.
 //
-// Arrays of kHugePageBytes (2 MiB) or more get memory of their own in transparent huge pages
+// Arrays of kHugePageArrayBytes (1 MiB) or more get memory of their own in transparent huge pages
 // (allocateHugePageArray, huge_pages.h), advised before anything touches it: each 2 MiB faults in
 // at once instead of in 512 pieces, and is returned to the system when the array is freed. Page
 // faults are dear in a virtual machine (about 11 us each in the Zen 5 guest of PERFORMANCE.md,
@@ -60,7 +60,7 @@ template <typename T> struct UninitialisedAllocator {
 
 private:
     // std::vector never asks for more than max_size() elements: n * sizeof(T) does not wrap.
-    static bool inHugePages(std::size_t n) { return n * sizeof(T) >= kHugePageBytes; }
+    static bool inHugePages(std::size_t n) { return n * sizeof(T) >= kHugePageArrayBytes; }
 };
 
 template <typename T> using UninitialisedVector = std::vector<T, UninitialisedAllocator<T>>;

@@ -117,6 +117,8 @@ TEST(UninitialisedVector, KeepsItsElementsAcrossTheHugePageThreshold) {
     EXPECT_EQ(copy[99], static_cast<uint32_t>(99 * 2654435761u));
     UninitialisedVector<uint32_t>().swap(values);
     EXPECT_EQ(values.capacity(), 0u);
+    const UninitialisedVector<uint8_t> fromTheThreshold(kHugePageArrayBytes);
+    EXPECT_TRUE(onHugePageBoundary(fromTheThreshold.data()));
 }
 
 // A plain struct with default member values, as the build's nodes are (BvhNode).

@@ -82,12 +82,12 @@ private:
 };
 
 // Sizes `shared`, the array whose slots [0, elements) several growable arrays take: `elements`
-// where they fill whole huge pages (kHugePageBytes or more), else none, each array then growing
-// in memory of its own from the start (slotIn). In a smaller array, on the heap, the unused ends
-// of the slots would be faulted in too: the thin triangles' first build took 1,070 page faults
-// against 810-900 with the subtrees' arrays each on its own.
+// where they take huge pages of their own (kHugePageArrayBytes or more), else none, each array
+// then growing in memory of its own from the start (slotIn). In a smaller array, on the heap, the
+// unused ends of the slots would be faulted in too: the thin triangles' first build took 1,070
+// page faults against 810-900 with the subtrees' arrays each on its own.
 template <typename T> void sizeSharedSlots(UninitialisedVector<T>& shared, std::size_t elements) {
-    shared.resize(elements * sizeof(T) >= kHugePageBytes ? elements : 0);
+    shared.resize(elements * sizeof(T) >= kHugePageArrayBytes ? elements : 0);
 }
 
 // The array in slot [first, end) of `shared` (sized by sizeSharedSlots), or, where `shared` is
