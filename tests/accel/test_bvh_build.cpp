@@ -207,6 +207,26 @@ TEST(BvhRebuild, MemoryMovedFromStillBuilds) {
     expectSameBytes(bvh, buildBvh(scene));
 }
 
+// Slots hold at least what they were asked for, one after another, each starting on a 64-byte
+// boundary of the shared array, whatever the element's size (28 bytes: every 16 elements).
+TEST(SlotLayout, SlotsFollowEachOtherOnCacheLineBoundaries) {
+    struct Element28 {
+        uint32_t words[7];
+    };
+    SlotLayout<Element28> layout;
+    const std::size_t asked[] = {0, 1, 15, 16, 17, 100};
+    for (const std::size_t n : asked) {
+        layout.append(n);
+    }
+    for (std::size_t i = 0; i < std::size(asked); ++i) {
+        EXPECT_EQ(layout.begin(i) * sizeof(Element28) % 64, 0u) << i;
+        EXPECT_GE(layout.begin(i + 1) - layout.begin(i), asked[i]) << i;
+        EXPECT_LT(layout.begin(i + 1) - layout.begin(i), asked[i] + 16) << i;
+    }
+    EXPECT_EQ(layout.total(), layout.begin(std::size(asked)));
+    EXPECT_EQ(layout.total(), std::size_t{0 + 16 + 16 + 16 + 32 + 112});
+}
+
 // A SlotArray fills its slot and nothing beyond it, then moves its elements to memory of its own.
 TEST(SlotArray, GrowsOutOfItsSlotKeepingItsElements) {
     constexpr uint32_t kCanary = 0xdeadbeefu;

@@ -192,26 +192,23 @@ void writeLeaves(const Scene& scene, const uint32_t* first, std::size_t count, s
 }
 
 // Where each deferred subtree's arrays go in the two arrays they share: subtree i's nodes in
-// [nodes[i], nodes[i + 1]) of one, its leaf references in [leaves[i], leaves[i + 1]) of the
-// other, each slot starting on a 64-byte boundary (no cache line shared by two threads' subtrees).
-// A subtree's leaves hold each of its references once: room() of them at most, which its slot
-// holds. Its nodes are 2 * leaves - 1: where every node of up to 8 references is a leaf
+// slot i of one, its leaf references in slot i of the other. A subtree's leaves hold each of its
+// references once: room() of them at most, which its slot holds. Its nodes are 2 * leaves - 1:
+// where every node of up to 8 references is a leaf
 // (`leavesOfUpTo8`, the 8-wide form's), 0.32-0.37 of its references on the meshes of
 // PERFORMANCE.md (0.41 at most in one subtree), so its slot holds half its references and 16
 // more; otherwise count + 1. Larger slots would cost: every page of the shared array is faulted
 // in, used or not. A subtree that needs more nodes moves them out of its slot (SlotArray).
 struct SubtreeSlots {
-    std::vector<std::size_t> nodes{0}, leaves{0};
+    SlotLayout<BvhNode> nodes;
+    SlotLayout<uint32_t> leaves;
 };
 
 SubtreeSlots subtreeSlots(const std::vector<BuildTask>& deferred, bool leavesOfUpTo8) {
-    constexpr std::size_t kNodesALine = 64 / sizeof(BvhNode), kLeavesALine = 64 / sizeof(uint32_t);
-    auto roundUp = [](std::size_t n, std::size_t to) { return (n + to - 1) / to * to; };
     SubtreeSlots slots;
     for (const BuildTask& task : deferred) {
-        const std::size_t nodes = leavesOfUpTo8 ? task.count / 2 + 16 : task.count + std::size_t{1};
-        slots.nodes.push_back(slots.nodes.back() + roundUp(nodes, kNodesALine));
-        slots.leaves.push_back(slots.leaves.back() + roundUp(task.room(), kLeavesALine));
+        slots.nodes.append(leavesOfUpTo8 ? task.count / 2 + 16 : task.count + std::size_t{1});
+        slots.leaves.append(task.room());
     }
     return slots;
 }
@@ -373,8 +370,8 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
     // of two arrays shared by them all (subtreeSlots, sizeSharedSlots).
     std::vector<Subtree> subtrees(deferred.size());
     const SubtreeSlots slots = subtreeSlots(deferred, context.leafAtMost >= kLeafMerge);
-    sizeSharedSlots(kept.subtreeNodes, slots.nodes.back());
-    sizeSharedSlots(kept.subtreeLeaves, slots.leaves.back());
+    sizeSharedSlots(kept.subtreeNodes, slots.nodes);
+    sizeSharedSlots(kept.subtreeLeaves, slots.leaves);
     std::vector<std::size_t> order(deferred.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -387,8 +384,8 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
         // Built in the job's own Subtree and moved in once: the subtrees lie side by side, and
         // growing them from several threads would share their cache lines.
         Subtree subtree;
-        subtree.nodes = slotIn(kept.subtreeNodes, slots.nodes[i], slots.nodes[i + 1]);
-        subtree.leafTriangles = slotIn(kept.subtreeLeaves, slots.leaves[i], slots.leaves[i + 1]);
+        subtree.nodes = slotIn(kept.subtreeNodes, slots.nodes, i);
+        subtree.leafTriangles = slotIn(kept.subtreeLeaves, slots.leaves, i);
         subtree.nodes.resize(1);
         builder.buildSubtree(subtree, local);
         subtrees[i] = std::move(subtree);

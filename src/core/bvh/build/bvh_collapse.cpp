@@ -290,28 +290,24 @@ void writeBlocks(const WidePart& part, BinaryTree& tree, BvhTriangleBlock* block
 }
 
 // Where each wide subtree's arrays go in the two arrays they share (CollapseMemory): part i's
-// nodes in [nodes[i], nodes[i + 1]) of one, its leaves in [leaves[i], leaves[i + 1]) of the
-// other, each slot starting on a 64-byte boundary (no cache line shared by two threads' parts).
-// Sized for n leaf references: a sixteenth of them and 16 more nodes, a quarter and 16 more
-// leaves. Measured per part on the meshes of PERFORMANCE.md: 0.033-0.036 nodes and 0.14-0.16
-// leaves a reference over all parts, 0.048-0.071 and 0.18-0.29 at most in one (a small part of
-// Sponza's). Larger slots would cost: every page of the shared arrays is faulted in, used or
-// not. A part that needs more moves its array out of its slot (SlotArray).
+// nodes in slot i of one, its leaves in slot i of the other. Sized for n leaf references: a
+// sixteenth of them and 16 more nodes, a quarter and 16 more leaves. Measured per part on the
+// meshes of PERFORMANCE.md: 0.033-0.036 nodes and 0.14-0.16 leaves a reference over all parts,
+// 0.048-0.071 and 0.18-0.29 at most in one (a small part of Sponza's). Larger slots would cost:
+// every page of the shared arrays is faulted in, used or not. A part that needs more moves its
+// array out of its slot (SlotArray).
 struct PartSlots {
-    std::vector<std::size_t> nodes{0}, leaves{0};
+    SlotLayout<BvhWideNode> nodes;
+    SlotLayout<LeafPlacement> leaves;
 };
 
 PartSlots partSlots(const std::vector<PendingPart>& pending,
                     const UninitialisedVector<LeafSpan>& spans) {
-    static_assert(sizeof(BvhWideNode) % 64 == 0 && 64 * 7 == 16 * sizeof(LeafPlacement));
-    constexpr std::size_t kLeavesInLines = 16; // 7 cache lines
     PartSlots slots;
     for (const PendingPart& part : pending) {
         const std::size_t references = spans[part.binary].count;
-        const std::size_t leaves = references / 4 + 16;
-        slots.nodes.push_back(slots.nodes.back() + references / 16 + 16);
-        slots.leaves.push_back(slots.leaves.back() +
-                               (leaves + kLeavesInLines - 1) / kLeavesInLines * kLeavesInLines);
+        slots.nodes.append(references / 16 + 16);
+        slots.leaves.append(references / 4 + 16);
     }
     return slots;
 }
@@ -348,13 +344,13 @@ bool buildWideBvh(Bvh& bvh, const Scene& scene, const UninitialisedVector<uint32
         std::max(kMinPartTriangles, static_cast<uint32_t>(leafScene.size() / 128));
     Collapser(tree, top, deferBelow, &pending).run(0, 1);
     const PartSlots slots = partSlots(pending, spans);
-    sizeSharedSlots(memory.nodes, slots.nodes.back());
-    sizeSharedSlots(memory.leaves, slots.leaves.back());
+    sizeSharedSlots(memory.nodes, slots.nodes);
+    sizeSharedSlots(memory.leaves, slots.leaves);
     std::vector<WidePart> parts(pending.size());
     team.forEach(parts.size(), [&](std::size_t i) {
         WidePart part; // moved in once: the parts' vectors would share cache lines
-        part.nodes = slotIn(memory.nodes, slots.nodes[i], slots.nodes[i + 1]);
-        part.leaves = slotIn(memory.leaves, slots.leaves[i], slots.leaves[i + 1]);
+        part.nodes = slotIn(memory.nodes, slots.nodes, i);
+        part.leaves = slotIn(memory.leaves, slots.leaves, i);
         part.depth = pending[i].depth;
         Collapser(tree, part, 0, nullptr).run(pending[i].binary, pending[i].depth);
         parts[i] = std::move(part);

@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <numeric>
 #include <utility>
+#include <vector>
 
 namespace raylab {
 
@@ -81,25 +83,44 @@ private:
     UninitialisedVector<T> own_; // the elements once they outgrew the slot
 };
 
-// Sizes `shared`, the array whose slots [0, elements) several growable arrays take: `elements`
-// where they take huge pages of their own (kHugePageArrayBytes or more), else none, each array
-// then growing in memory of its own from the start (slotIn). In a smaller array, on the heap, the
-// unused ends of the slots would be faulted in too: the thin triangles' first build took 1,070
-// page faults against 810-900 with the subtrees' arrays each on its own.
-template <typename T> void sizeSharedSlots(UninitialisedVector<T>& shared, std::size_t elements) {
+// Where the slots of one shared array lie, one after another: slot i is [begin(i), begin(i + 1)),
+// each starting on a 64-byte boundary (no cache line shared by two threads' arrays).
+template <typename T> class SlotLayout {
+public:
+    // A slot of at least `elements`, rounded up to whole cache lines.
+    void append(std::size_t elements) {
+        ends_.push_back(ends_.back() + (elements + kPerLine - 1) / kPerLine * kPerLine);
+    }
+    std::size_t begin(std::size_t i) const { return ends_[i]; }
+    std::size_t total() const { return ends_.back(); }
+
+private:
+    static constexpr std::size_t kPerLine = 64 / std::gcd(std::size_t{64}, sizeof(T));
+    std::vector<std::size_t> ends_{0};
+};
+
+// Sizes `shared`, the array whose slots `layout` places: all of them where they take huge pages of
+// their own (kHugePageArrayBytes or more), else none, each array then growing in memory of its
+// own from the start (slotIn). In a smaller array, on the heap, the unused ends of the slots would
+// be faulted in too: the thin triangles' first build took 1,070 page faults against 810-900 with
+// the subtrees' arrays each on its own.
+template <typename T>
+void sizeSharedSlots(UninitialisedVector<T>& shared, const SlotLayout<T>& layout) {
+    const std::size_t elements = layout.total();
     shared.resize(elements * sizeof(T) >= kHugePageArrayBytes ? elements : 0);
 }
 
-// The array in slot [first, end) of `shared` (sized by sizeSharedSlots), or, where `shared` is
-// empty, in memory of its own with room for as many elements.
+// The array in slot i of `shared` (sized by sizeSharedSlots), or, where `shared` is empty, in
+// memory of its own with room for as many elements.
 template <typename T>
-SlotArray<T> slotIn(UninitialisedVector<T>& shared, std::size_t first, std::size_t end) {
+SlotArray<T> slotIn(UninitialisedVector<T>& shared, const SlotLayout<T>& layout, std::size_t i) {
+    const std::size_t first = layout.begin(i), size = layout.begin(i + 1) - first;
     if (shared.empty()) {
         SlotArray<T> own;
-        own.reserve(end - first);
+        own.reserve(size);
         return own;
     }
-    return SlotArray<T>(shared.data() + first, end - first);
+    return SlotArray<T>(shared.data() + first, size);
 }
 
 } // namespace raylab
