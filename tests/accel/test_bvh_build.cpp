@@ -195,6 +195,44 @@ TEST(BvhRebuild, SameSceneReusesEveryArray) {
     expectSameBytes(bvh, buildBvh(scene, options));
 }
 
+// The memory keeps the build's threads: a rebuild on as many threads takes the same team, one
+// on another count a new team of that many; a scene too small for more than one thread leaves the
+// team alone. The trees are a fresh build's each time.
+TEST(BvhRebuild, KeepsItsThreadsFromOneBuildToTheNext) {
+    const Scene scene = makeCluttered(40000, 16);
+    const Scene small = makeTriangleSoup(500, 0.05f, 17);
+    BvhBuildOptions two, three;
+    two.threads = 2;
+    three.threads = 3;
+    BvhBuildMemory memory;
+    Bvh bvh;
+    // How many loops the kept team has run (a new team starts from none).
+    const auto loops = [&] {
+        const BuildTeam* team = memory.arrays().team.get();
+        return team ? team->loopsShared() : 0ul;
+    };
+    rebuildBvh(scene, two, memory, bvh);
+    ASSERT_NE(memory.arrays().team, nullptr);
+    EXPECT_EQ(memory.arrays().team->size(), 2);
+    const unsigned long perBuild = loops();
+    ASSERT_GT(perBuild, 0ul);
+    rebuildBvh(scene, two, memory, bvh);
+    EXPECT_EQ(loops(), 2 * perBuild); // the same team, the same loops again
+    expectSameBytes(bvh, buildBvh(scene, two));
+    rebuildBvh(scene, three, memory, bvh);
+    ASSERT_NE(memory.arrays().team, nullptr);
+    EXPECT_EQ(memory.arrays().team->size(), 3);
+    EXPECT_EQ(loops(), perBuild); // a new team
+    expectSameBytes(bvh, buildBvh(scene, three));
+    rebuildBvh(small, three, memory, bvh); // on one thread, the team of three left as it was
+    EXPECT_EQ(memory.arrays().team->size(), 3);
+    EXPECT_EQ(loops(), perBuild);
+    expectSameBytes(bvh, buildBvh(small, three));
+    rebuildBvh(scene, three, memory, bvh);
+    EXPECT_EQ(loops(), 2 * perBuild);
+    expectSameBytes(bvh, buildBvh(scene, three));
+}
+
 // A memory moved from still builds (it starts empty again).
 TEST(BvhRebuild, MemoryMovedFromStillBuilds) {
     const Scene scene = makeTriangleSoup(9000, 0.05f, 15);

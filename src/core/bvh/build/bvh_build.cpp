@@ -303,8 +303,10 @@ void rebuildBvh(const Scene& scene, const BvhBuildOptions& options, BvhBuildMemo
         bvh.nodes.swap(kept.binaryNodes); // kept there by the last build that dropped them
     }
     // A scene smaller than one subtree task gains nothing from more threads than one.
-    BuildTeam team(scene.triangles.size() < 2 * kMinTaskSize ? 1
-                                                             : resolveThreadCount(options.threads));
+    BuildTeam alone(1); // no threads of its own
+    BuildTeam& team = scene.triangles.size() < 2 * kMinTaskSize
+                          ? alone
+                          : kept.teamOf(resolveThreadCount(options.threads));
     RecordBounds recordBounds;      // of the records of the valid triangles
     glm::vec3 widestTriangle{0.0f}; // on each axis, before pre-splitting
     // Spatial splits add at most this fraction of references (BvhBuildOptions; NaN: none).

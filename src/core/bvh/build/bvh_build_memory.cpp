@@ -23,6 +23,14 @@ std::size_t BvhBuildMemory::Arrays::bytes() const {
            collapse.leaves.capacity() * sizeof(LeafPlacement);
 }
 
+BuildTeam& BvhBuildMemory::Arrays::teamOf(int threads) {
+    if (!team || team->size() != threads) {
+        team.reset(); // its threads joined before the new team's start
+        team = std::make_unique<BuildTeam>(threads);
+    }
+    return *team;
+}
+
 BvhBuildMemory::BvhBuildMemory() : arrays_(std::make_unique<Arrays>()) {}
 BvhBuildMemory::~BvhBuildMemory() = default;
 BvhBuildMemory::BvhBuildMemory(BvhBuildMemory&&) noexcept = default;

@@ -23,6 +23,8 @@ public:
     BuildTeam& operator=(const BuildTeam&) = delete;
 
     int size() const { return static_cast<int>(helpers_.size()) + 1; }
+    // Loops run on more than one thread since the team started.
+    unsigned long loopsShared() const { return generation_.load(std::memory_order_relaxed); }
 
     // Runs job(i) once for every i in [0, count), indices handed out in increasing order to
     // whichever thread asks first; returns when all are done. Not reentrant: a job must not call
