@@ -263,6 +263,83 @@ TEST(BvhSpatialSplit, CountingGivesTheSidesThatWritingMakes) {
     EXPECT_GT(crossed, 3); // the room's quads cross most planes through it
 }
 
+// A whole node's spatial split writes both sides into its children's room, the right side from
+// the room's end (applySpatialSplitInRoom, bvh_build_subtree.cpp): the same sides, bounds and
+// order as written apart, in a room just large enough and in a larger one; in a room too small
+// for both (a split the budget then turns down) still nothing outside the room is written.
+TEST(BvhSpatialSplit, InOneRoomTheSidesAreThoseWrittenApart) {
+    const Scene scene = makeRoom(2000, 37);
+    RecordVector records;
+    Aabb sceneBox;
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+        const Triangle& t = scene.triangles[i];
+        const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
+        const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
+        records.push_back({lower, static_cast<uint32_t>(i), upper, 0.0f});
+        sceneBox.extend(lower);
+        sceneBox.extend(upper);
+    }
+    const std::size_t n = records.size();
+    constexpr std::size_t kGuard = 16; // records on each side of the room, never to be written
+    PrimRecord canary{};
+    std::memset(&canary, 0xA5, sizeof(canary));
+    const auto boundsBytes = [](const RecordBounds& b) {
+        const Aabb boxes[2] = {b.box.toAabb(), b.centres.toAabb()};
+        std::vector<unsigned char> bytes(sizeof(boxes));
+        std::memcpy(bytes.data(), boxes, sizeof(boxes));
+        return bytes;
+    };
+    int tooSmall = 0; // rooms tried that could not hold both sides
+    for (int axis = 0; axis < 3; ++axis) {
+        const float lower = sceneBox.lower[axis], extent = sceneBox.upper[axis] - lower;
+        for (const float position : {lower - 1.0f, lower + 0.27f * extent, lower + 0.5f * extent,
+                                     records[11].upper[axis], sceneBox.upper[axis] + 1.0f}) {
+            SCOPED_TRACE(testing::Message() << "axis " << axis << " plane " << position);
+            SpatialSplit split;
+            split.axis = axis;
+            split.position = position;
+            RecordVector apartLeft(n), apartRight(n);
+            RecordBounds apartLeftBounds, apartRightBounds;
+            const SpatialSides apart = applySpatialSplit(
+                scene, records.data(), records.data() + n, split, 1e-6f, apartLeft.data(),
+                apartRight.data(), apartLeftBounds, apartRightBounds);
+            const std::size_t both = apart.left + apart.right;
+            std::vector<std::size_t> sizes{both, both + 100};
+            if (both > n) {
+                sizes.push_back(n); // the least room the contract allows
+                sizes.push_back(both - 1);
+            }
+            for (const std::size_t size : sizes) {
+                SCOPED_TRACE(testing::Message() << "room " << size);
+                std::vector<PrimRecord> memory(size + 2 * kGuard, canary);
+                PrimRecord* room = memory.data() + kGuard;
+                RecordBounds leftBounds, rightBounds;
+                const SpatialSides made =
+                    applySpatialSplitInRoom(scene, records.data(), records.data() + n, split, 1e-6f,
+                                            room, size, leftBounds, rightBounds);
+                ASSERT_EQ(made.left, apart.left);
+                ASSERT_EQ(made.right, apart.right);
+                EXPECT_EQ(boundsBytes(leftBounds), boundsBytes(apartLeftBounds));
+                EXPECT_EQ(boundsBytes(rightBounds), boundsBytes(apartRightBounds));
+                for (std::size_t g = 0; g < kGuard; ++g) {
+                    ASSERT_EQ(std::memcmp(&memory[g], &canary, sizeof(canary)), 0) << g;
+                    ASSERT_EQ(std::memcmp(&memory[kGuard + size + g], &canary, sizeof(canary)), 0)
+                        << g;
+                }
+                if (size < both) {
+                    ++tooSmall;
+                    continue;
+                }
+                EXPECT_EQ(std::memcmp(room, apartLeft.data(), made.left * sizeof(PrimRecord)), 0);
+                EXPECT_EQ(std::memcmp(room + (size - made.right), apartRight.data(),
+                                      made.right * sizeof(PrimRecord)),
+                          0);
+            }
+        }
+    }
+    EXPECT_GT(tooSmall, 3); // most planes through the room cut some reference in two
+}
+
 // binSpatial adds each reference to two ranges of bins and cuts the ranges' unions to the
 // slabs only at the end; its bins must equal those of references cut to each bin's slab and
 // added one by one, for references crossing any number of bins (1 to all 16), lying on planes

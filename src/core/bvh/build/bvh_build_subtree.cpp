@@ -166,25 +166,25 @@ SplitChoice SubtreeBuilder::choose(const PrimRecord* first, uint32_t count,
     return choice;
 }
 
-SplitKind SubtreeBuilder::splitNode(const BuildTask& task, BinSet& scratch, RecordVector& rights,
-                                    BuildTask& left, BuildTask& right) const {
+SplitKind SubtreeBuilder::splitNode(const BuildTask& task, BinSet& scratch, BuildTask& left,
+                                    BuildTask& right) const {
     std::vector<BinSet> noChunks; // never allocated: no team
     const SplitChoice choice = choose(task.first, task.count, task.bounds, task.depth,
                                       task.splitBudget, nullptr, scratch, noChunks);
     SplitKind kind = choice.kind;
     if (kind == SplitKind::Spatial) {
-        // The left side straight into the spare room, the right side aside: where it goes
-        // depends on the left side's size, and the split may yet fall back.
-        if (rights.size() < task.count) {
-            rights.resize(task.count);
-        }
-        const SpatialSides made =
-            applySpatialSplit(*context_.scene, task.first, task.first + task.count, choice.spatial,
-                              context_.slack, task.spare, rights.data(), left.bounds, right.bounds);
+        // Both sides into the spare room, the right side from its end: where the right side goes
+        // depends on the left side's size, and the split may yet fall back. A kept split's sides
+        // fit the room (keepsSpatialSplit checks the budget).
+        const SpatialSides made = applySpatialSplitInRoom(
+            *context_.scene, task.first, task.first + task.count, choice.spatial, context_.slack,
+            task.spare, task.room(), left.bounds, right.bounds);
         if (keepsSpatialSplit(choice, task.count, task.splitBudget, context_.minGainPerReference,
                               made.left, left.bounds, made.right, right.bounds)) {
             placeChildren(task, made.left, made.right, task.spare, task.first, left, right);
-            std::copy_n(rights.data(), made.right, right.first);
+            // Down to the right child's room, which starts at or before it.
+            const PrimRecord* rightSide = task.spare + (task.room() - made.right);
+            std::copy(rightSide, rightSide + made.right, right.first);
             return kind;
         }
         kind = choice.fallback;
@@ -206,7 +206,6 @@ SplitKind SubtreeBuilder::splitNode(const BuildTask& task, BinSet& scratch, Reco
 void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
     std::vector<BuildTask> stack{root};
     BinSet scratch;
-    RecordVector rights; // a spatial split's right side, until it is kept
     while (!stack.empty()) {
         const BuildTask task = stack.back();
         stack.pop_back();
@@ -214,7 +213,7 @@ void SubtreeBuilder::buildSubtree(Subtree& out, const BuildTask& root) const {
         out.nodes[task.slot].lower = box.lower;
         out.nodes[task.slot].upper = box.upper;
         BuildTask left, right;
-        if (splitNode(task, scratch, rights, left, right) == SplitKind::Leaf) {
+        if (splitNode(task, scratch, left, right) == SplitKind::Leaf) {
             out.addLeaf(task.slot, task.first, task.count);
             continue;
         }

@@ -126,10 +126,9 @@ private:
 
     // Splits the node of `task` on this thread, as choose() chose: returns the kind of split
     // made and fills left and right, placed in the node's two ranges (placeChildren); Leaf: the
-    // node stays a leaf. `scratch` as choose() takes it; `rights` holds a spatial split's right
-    // side until the split is kept.
-    SplitKind splitNode(const BuildTask& task, BinSet& scratch, RecordVector& rights,
-                        BuildTask& left, BuildTask& right) const;
+    // node stays a leaf. `scratch` as choose() takes it. Allocates nothing.
+    SplitKind splitNode(const BuildTask& task, BinSet& scratch, BuildTask& left,
+                        BuildTask& right) const;
     // The same with the team: the node's references cut into chunks whose size depends only on
     // their count (BuildChunks), bins merged and children written in chunk order.
     SplitKind splitOnTeam(const BuildTask& task, BuildTeam& team, BinSet& scratch,

@@ -152,9 +152,8 @@ void SubtreeBuilder::buildTop(Subtree& out, BuildTask root, BuildTeam& team, std
         team.forEach(order.size(), [&](std::size_t k) {
             const std::size_t i = order[k];
             BinSet own; // the job's: the batch's nodes run side by side
-            RecordVector rights;
             NodeSplit s;
-            s.kind = splitNode(batch[i], own, rights, s.left, s.right);
+            s.kind = splitNode(batch[i], own, s.left, s.right);
             splits[i] = s;
         });
         // Children's slots in the batch's order, whatever ran where.

@@ -179,8 +179,14 @@ SpatialSplit bestSpatialSplit(const SpatialBins& bins, const Aabb& bounds, int a
 
 namespace {
 
-// applySpatialSplit, or with kWrite false countSpatialSplit: the same decisions either way.
-template <bool kWrite>
+// Where spatialSides writes: the sides to arrays of their own (applySpatialSplit), nowhere
+// (countSpatialSplit), or into one room, the right side down from its end
+// (applySpatialSplitInRoom).
+enum class SidesTo { Arrays, Nowhere, OneRoom };
+
+// applySpatialSplit, countSpatialSplit or applySpatialSplitInRoom (with `right` the room's end):
+// the same decisions each way.
+template <SidesTo kTo>
 SpatialSides spatialSides(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
                           const SpatialSplit& split, float slack, PrimRecord* left,
                           PrimRecord* right, RecordBounds& leftBounds, RecordBounds& rightBounds) {
@@ -188,14 +194,25 @@ SpatialSides spatialSides(const Scene& scene, const PrimRecord* first, const Pri
     // The sides' ends and bounds are kept in registers, stored once.
     std::size_t l = 0, r = 0;
     RecordBounds lb = leftBounds, rb = rightBounds;
-    const auto put = [](PrimRecord* to, std::size_t& n, RecordBounds& bounds, __m128 lo,
-                        __m128 hi) {
-        if constexpr (kWrite) {
-            _mm_storeu_ps(&to[n].lower.x, lo);
-            _mm_storeu_ps(&to[n].upper.x, hi);
+    const auto store = [](PrimRecord* to, __m128 lo, __m128 hi) {
+        _mm_storeu_ps(&to->lower.x, lo);
+        _mm_storeu_ps(&to->upper.x, hi);
+    };
+    const auto putLeft = [&](__m128 lo, __m128 hi) {
+        if constexpr (kTo != SidesTo::Nowhere) {
+            store(left + l, lo, hi);
         }
-        ++n;
-        bounds.add(lo, hi);
+        ++l;
+        lb.add(lo, hi);
+    };
+    const auto putRight = [&](__m128 lo, __m128 hi) {
+        if constexpr (kTo == SidesTo::Arrays) {
+            store(right + r, lo, hi);
+        } else if constexpr (kTo == SidesTo::OneRoom) {
+            store(right - 1 - r, lo, hi);
+        }
+        ++r;
+        rb.add(lo, hi);
     };
     // Lane 3 of a record's lower corner holds its scene index: a part keeps the reference's
     // (and takes PrimRecord::zero in its upper corner's).
@@ -203,22 +220,20 @@ SpatialSides spatialSides(const Scene& scene, const PrimRecord* first, const Pri
     for (const PrimRecord* p = first; p != last; ++p) {
         const __m128 lo = _mm_loadu_ps(&p->lower.x), hi = _mm_loadu_ps(&p->upper.x);
         if (p->upper[a] <= split.position) {
-            put(left, l, lb, lo, hi);
+            putLeft(lo, hi);
         } else if (p->lower[a] >= split.position) {
-            put(right, r, rb, lo, hi);
+            putRight(lo, hi);
         } else {
             const CrossingParts parts =
                 cutCrossing(scene.triangles[p->sceneIndex], lo, hi, a, split.position, slack);
             if (!parts.leftEmpty) {
-                put(left, l, lb, withLane(indexLane, lo, parts.left.lower),
-                    xyzOf(parts.left.upper));
+                putLeft(withLane(indexLane, lo, parts.left.lower), xyzOf(parts.left.upper));
             }
             if (!parts.rightEmpty) {
-                put(right, r, rb, withLane(indexLane, lo, parts.right.lower),
-                    xyzOf(parts.right.upper));
+                putRight(withLane(indexLane, lo, parts.right.lower), xyzOf(parts.right.upper));
             }
             if (parts.leftEmpty && parts.rightEmpty) {
-                put(left, l, lb, lo, hi); // only if rounding lost the part: keep it whole
+                putLeft(lo, hi); // only if rounding lost the part: keep it whole
             }
         }
     }
@@ -233,15 +248,27 @@ SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, cons
                                const SpatialSplit& split, float slack, PrimRecord* left,
                                PrimRecord* right, RecordBounds& leftBounds,
                                RecordBounds& rightBounds) {
-    return spatialSides<true>(scene, first, last, split, slack, left, right, leftBounds,
-                              rightBounds);
+    return spatialSides<SidesTo::Arrays>(scene, first, last, split, slack, left, right, leftBounds,
+                                         rightBounds);
+}
+
+SpatialSides applySpatialSplitInRoom(const Scene& scene, const PrimRecord* first,
+                                     const PrimRecord* last, const SpatialSplit& split, float slack,
+                                     PrimRecord* room, std::size_t roomSize,
+                                     RecordBounds& leftBounds, RecordBounds& rightBounds) {
+    const SpatialSides made = spatialSides<SidesTo::OneRoom>(
+        scene, first, last, split, slack, room, room + roomSize, leftBounds, rightBounds);
+    if (made.left + made.right <= roomSize) {
+        std::reverse(room + (roomSize - made.right), room + roomSize);
+    }
+    return made;
 }
 
 SpatialSides countSpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
                                const SpatialSplit& split, float slack, RecordBounds& leftBounds,
                                RecordBounds& rightBounds) {
-    return spatialSides<false>(scene, first, last, split, slack, nullptr, nullptr, leftBounds,
-                               rightBounds);
+    return spatialSides<SidesTo::Nowhere>(scene, first, last, split, slack, nullptr, nullptr,
+                                          leftBounds, rightBounds);
 }
 
 } // namespace raylab

@@ -75,6 +75,16 @@ SpatialSides applySpatialSplit(const Scene& scene, const PrimRecord* first, cons
                                PrimRecord* right, RecordBounds& leftBounds,
                                RecordBounds& rightBounds);
 
+// applySpatialSplit into one room of roomSize >= last - first records, which must not overlap the
+// input: the left side from room[0] up, the right side from room[roomSize - 1] down, so that the
+// right side needs no array of its own (the room is the children's: bvh_build_subtree.cpp).
+// When the sides fit (left + right <= roomSize), the left side is room[0, left) and the right
+// side room[roomSize - right, roomSize), each in the order of the input; else the room holds
+// nothing to use, and nothing outside it was written.
+SpatialSides applySpatialSplitInRoom(const Scene& scene, const PrimRecord* first,
+                                     const PrimRecord* last, const SpatialSplit& split, float slack,
+                                     PrimRecord* room, std::size_t roomSize,
+                                     RecordBounds& leftBounds, RecordBounds& rightBounds);
 // What applySpatialSplit would write, without writing it: the sides' sizes, and their records
 // added to the sides' bounds.
 SpatialSides countSpatialSplit(const Scene& scene, const PrimRecord* first, const PrimRecord* last,
