@@ -12,11 +12,12 @@ namespace raylab {
 namespace {
 
 // Nodes of fewer references are split whole on one thread, several at a time, rather than by
-// chunks on the team: below one and a half chunks' worth (chunks of 6,144 references or fewer),
-// a node's parallel loops are short enough that the team's threads spend much of them waking and
-// waiting; above it, a node split whole can hold up its batch (the thin triangles' first batch is
-// two nodes of about 30,000 references, one taking twice as long as the other). Measured on the
-// Zen 5, 2 threads (PERFORMANCE.md, "What each change gained: the BVH build").
+// chunks on the team: below one and a half chunks' worth (where each of its four chunks would
+// hold fewer than 6,144 references), a node's parallel loops are short enough that the team's
+// threads spend much of them waking and waiting; above it, a node split whole can hold up its
+// batch (the thin triangles' first batch is two nodes of about 30,000 references, one taking
+// twice as long as the other). Measured on the Zen 5, 2 threads (PERFORMANCE.md, "What each
+// change gained: the BVH build").
 constexpr uint32_t kWholeBelow = kBuildChunkSize * 3 / 2;
 // Such nodes are split in batches of this many (fewer when no other node is waiting), taken in
 // depth-first order; a rule of the counts alone, so that the slots do not depend on the team.
