@@ -195,14 +195,9 @@ TEST(BvhSpatialSplit, CutPartsKeepTheirSceneIndexAndAZeroBesideTheirUpperCorner)
     EXPECT_EQ(right.upper.y, 0.5f); // the triangle's edge at x = -0.75
 }
 
-// The top's spatial splits count each chunk's sides first and write them only if the split is
-// kept (bvh_build_top.cpp): countSpatialSplit must give the sizes and bounds applySpatialSplit
-// gives, chunk by chunk, and the chunks' parts written side by side must be the parts of the
-// whole node, for planes through the scene, on its vertices and outside it.
-TEST(BvhSpatialSplit, CountingGivesTheSidesThatWritingMakes) {
-    const Scene scene = makeRoom(3000, 31);
+// One record a triangle of the scene (its box and index), and the scene's box.
+RecordVector recordsOf(const Scene& scene, Aabb& sceneBox) {
     RecordVector records;
-    Aabb sceneBox;
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
         const Triangle& t = scene.triangles[i];
         const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
@@ -211,6 +206,17 @@ TEST(BvhSpatialSplit, CountingGivesTheSidesThatWritingMakes) {
         sceneBox.extend(lower);
         sceneBox.extend(upper);
     }
+    return records;
+}
+
+// The top's spatial splits count each chunk's sides first and write them only if the split is
+// kept (bvh_build_top.cpp): countSpatialSplit must give the sizes and bounds applySpatialSplit
+// gives, chunk by chunk, and the chunks' parts written side by side must be the parts of the
+// whole node, for planes through the scene, on its vertices and outside it.
+TEST(BvhSpatialSplit, CountingGivesTheSidesThatWritingMakes) {
+    const Scene scene = makeRoom(3000, 31);
+    Aabb sceneBox;
+    RecordVector records = recordsOf(scene, sceneBox);
     const auto sameBounds = [](const RecordBounds& a, const RecordBounds& b) {
         const Aabb boxes[2] = {a.box.toAabb(), b.box.toAabb()};
         const Aabb centres[2] = {a.centres.toAabb(), b.centres.toAabb()};
@@ -269,16 +275,8 @@ TEST(BvhSpatialSplit, CountingGivesTheSidesThatWritingMakes) {
 // for both (a split the budget then turns down) still nothing outside the room is written.
 TEST(BvhSpatialSplit, InOneRoomTheSidesAreThoseWrittenApart) {
     const Scene scene = makeRoom(2000, 37);
-    RecordVector records;
     Aabb sceneBox;
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-        const Triangle& t = scene.triangles[i];
-        const glm::vec3 lower = glm::min(t.v0, glm::min(t.v1, t.v2));
-        const glm::vec3 upper = glm::max(t.v0, glm::max(t.v1, t.v2));
-        records.push_back({lower, static_cast<uint32_t>(i), upper, 0.0f});
-        sceneBox.extend(lower);
-        sceneBox.extend(upper);
-    }
+    RecordVector records = recordsOf(scene, sceneBox);
     const std::size_t n = records.size();
     constexpr std::size_t kGuard = 16; // records on each side of the room, never to be written
     PrimRecord canary{};
