@@ -18,11 +18,13 @@ void adviseHugePages(void* data, std::size_t bytes);
 inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
 
 // Arrays of this size or more take huge pages of their own (uninitialised_allocator.h), those
-// under 2 MiB a whole one: for 1 MiB, one fault and one 2 MiB page zeroed instead of 256 faults
+// under 2 MiB a whole one: for 256 KiB, one fault and one 2 MiB page zeroed instead of 64 faults
 // of 4 KiB, a gain where a fault is dear (10.6-11.5 us in the Zen 5 guest of PERFORMANCE.md,
-// 0.22 us a 4 KiB share of a huge page; on the Intel Xeon 1.7-1.9 us and 0.45-0.68 us), for up
-// to 1 MiB of memory more than the array asks for.
-inline constexpr std::size_t kHugePageArrayBytes = std::size_t{1} << 20;
+// 0.22 us a 4 KiB share of a huge page: about 110 us against 700; on the Intel Xeon 1.7-1.9 us
+// and 0.45-0.68 us, 230-350 us against 115), for up to 1.75 MiB of memory more than the array
+// asks for. A first 1-thread Sponza build took 700 faults with 1 MiB, 37 with 256 KiB
+// (PERFORMANCE.md, "Memory and page faults").
+inline constexpr std::size_t kHugePageArrayBytes = std::size_t{256} << 10;
 
 // Memory of its own for an array of `bytes` (kHugePageArrayBytes or more): mapped from the system
 // on a 2 MiB boundary, rounded up to whole 2 MiB pages and advised huge pages, untouched (the

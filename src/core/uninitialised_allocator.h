@@ -4,13 +4,13 @@
 // structs of numbers unwritten, their default member values included, so that the memory is first
 // touched, and faulted in, by the threads that fill it, and written once rather than twice.
 //
-// Arrays of kHugePageArrayBytes (1 MiB) or more get memory of their own in transparent huge pages
-// (allocateHugePageArray, huge_pages.h), advised before anything touches it: each 2 MiB faults in
-// at once instead of in 512 pieces, and is returned to the system when the array is freed. Page
-// faults are dear in a virtual machine (about 11 us each in the Zen 5 guest of PERFORMANCE.md,
-// "On the Zen 5"), and a build writes tens of megabytes of new arrays: a first build of the
-// dragon took 7,000 page faults with them, 26,000 without (220 since its subtrees and the 8-wide
-// form's share arrays too: bvh_slot_array.h). Smaller arrays come from the heap.
+// Arrays of kHugePageArrayBytes (256 KiB) or more get memory of their own in transparent huge
+// pages (allocateHugePageArray, huge_pages.h), advised before anything touches it: each 2 MiB
+// faults in at once instead of in 512 pieces, and is returned to the system when the array is
+// freed. Page faults are dear in a virtual machine (about 11 us each in the Zen 5 guest of
+// PERFORMANCE.md, "On the Zen 5"), and a build writes tens of megabytes of new arrays: a first
+// build of the dragon took 7,000 page faults with them, 26,000 without (220 since its subtrees
+// and the 8-wide form's share arrays too: bvh_slot_array.h). Smaller arrays come from the heap.
 
 #include "huge_pages.h"
 

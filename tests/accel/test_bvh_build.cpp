@@ -334,7 +334,7 @@ TEST(BvhBuild, SubtreesInSharedSlotsGiveTheSameBytes) {
     options.threads = 2;
     BvhBuildMemory memory;
     Bvh bvh;
-    rebuildBvh(makeTriangleSoup(20000, 0.05f, 19), options, memory, bvh);
+    rebuildBvh(makeTriangleSoup(6000, 0.05f, 19), options, memory, bvh);
     const BvhBuildMemory::Arrays& kept = memory.arrays();
     EXPECT_TRUE(kept.subtreeNodes.empty() && kept.collapse.nodes.empty()); // too small
     rebuildBvh(scene, options, memory, bvh);
