@@ -1,6 +1,6 @@
 // A first build's page faults: every array of kHugePageArrayBytes (256 KiB) or more, the build's
 // working arrays and the BVH's own, faults in 2 MiB at a time (core/huge_pages.h), so that a
-// scene of tens of thousands of triangles, whose arrays are mostly of 256 KiB to 1 MiB, takes
+// scene of tens of thousands of triangles, several of whose arrays are of 256 KiB to 1 MiB, takes
 // tens of page faults rather than hundreds (each about 11 us in the Zen 5 guest of
 // PERFORMANCE.md, "Memory and page faults").
 
@@ -58,10 +58,10 @@ constexpr bool kSanitized =
     false;
 #endif
 
-// 60,000 small triangles: 11.6 MB of arrays, of which the BVH's 8-wide nodes, its leaves' scene
-// indices, the binary nodes' spans and the collapse's parts are each between 256 KiB and 1 MiB.
-// With huge pages from 1 MiB instead, the first build (1 thread) took 552-554 page faults and the
-// next (2 threads, in memory the heap had kept of the first) 193-223; from 256 KiB, 165 and 45.
+// 60,000 small triangles: 11.6 MB of arrays (the BVH's and those BvhBuildMemory keeps). With huge
+// pages only from 1 MiB, its arrays under 1 MiB faulted in 4 KiB at a time: the first build (1
+// thread) took 552-554 page faults and the next (2 threads, in memory the heap had kept of the
+// first) 193-223; from 256 KiB, 165 and 45.
 TEST(BvhFirstBuild, FaultsInItsArraysAHugePageAtATime) {
     if (!hugePagesOnRequest()) {
         GTEST_SKIP() << "transparent huge pages are off here";
