@@ -6,6 +6,8 @@
 
 #include "accel_scenes.h"
 #include "core/bvh/bvh.h"
+#include "huge_pages_mode.h"
+#include "io/sanitizer_build.h"
 
 #include <cstddef>
 #include <fstream>
@@ -37,36 +39,15 @@ long hugePageFallbacks() {
     return -1;
 }
 
-bool hugePagesOnRequest() {
-    std::ifstream file("/sys/kernel/mm/transparent_hugepage/enabled");
-    std::string modes;
-    std::getline(file, modes);
-    return modes.find("[madvise]") != std::string::npos ||
-           modes.find("[always]") != std::string::npos;
-}
-
-constexpr bool kSanitized =
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-    true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-    true;
-#else
-    false;
-#endif
-#else
-    false;
-#endif
-
 // 60,000 small triangles: 11.6 MB of arrays (the BVH's and those BvhBuildMemory keeps). With huge
 // pages only from 1 MiB, its arrays under 1 MiB faulted in 4 KiB at a time: the first build (1
 // thread) took 552-554 page faults and the next (2 threads, in memory the heap had kept of the
 // first) 193-223; from 256 KiB, 165 and 45.
 TEST(BvhFirstBuild, FaultsInItsArraysAHugePageAtATime) {
-    if (!hugePagesOnRequest()) {
+    if (!test::hugePagesOnRequest()) {
         GTEST_SKIP() << "transparent huge pages are off here";
     }
-    if (kSanitized) {
+    if (kSanitizerBuild) {
         GTEST_SKIP() << "a sanitizer's allocator and shadow memory fault in pages of their own";
     }
     const Scene scene = makeTriangleSoup(60000, 0.01f, 23);

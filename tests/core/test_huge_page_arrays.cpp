@@ -3,6 +3,7 @@
 // elements left unwritten.
 
 #include "huge_pages.h"
+#include "huge_pages_mode.h"
 #include "uninitialised_allocator.h"
 
 #include <cstddef>
@@ -45,13 +46,6 @@ std::string smapsField(const void* address, const std::string& field) {
     return {};
 }
 
-std::string transparentHugePagesMode() {
-    std::ifstream file("/sys/kernel/mm/transparent_hugepage/enabled");
-    std::string modes;
-    std::getline(file, modes);
-    return modes; // "always [madvise] never": the one in brackets is in force
-}
-
 TEST(HugePageArray, IsOnA2MiBBoundaryZeroedAndUsableOverEveryByte) {
     for (const std::size_t bytes : {2 * kMiB, 2 * kMiB + 1, 5 * kMiB + 123, 16 * kMiB}) {
         auto* data = static_cast<unsigned char*>(allocateHugePageArray(bytes));
@@ -76,10 +70,9 @@ TEST(HugePageArray, IsOnA2MiBBoundaryZeroedAndUsableOverEveryByte) {
 }
 
 TEST(HugePageArray, IsAdvisedHugePagesWhereTheKernelOffersThem) {
-    const std::string modes = transparentHugePagesMode();
-    if (modes.find("[madvise]") == std::string::npos &&
-        modes.find("[always]") == std::string::npos) {
-        GTEST_SKIP() << "transparent huge pages are off here (" << modes << ")";
+    if (!test::hugePagesOnRequest()) {
+        GTEST_SKIP() << "transparent huge pages are off here (" << test::transparentHugePagesMode()
+                     << ")";
     }
     const std::size_t bytes = 6 * kMiB;
     void* data = allocateHugePageArray(bytes);

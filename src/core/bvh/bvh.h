@@ -126,7 +126,7 @@ Bvh buildBvh(const Scene& scene, const BvhBuildOptions& options = {});
 // leaves them allocated, so that the next build of about the same size writes memory already
 // faulted in instead of new pages the system must map and zero (on the Zen 5 guest of
 // PERFORMANCE.md, "Memory and page faults", about a tenth of a 2-thread Sponza build). Empty until
-// a build uses it; then holds bytes(), 127-150 bytes a triangle of the largest scene built with it
+// a build uses it; then holds bytes(), 137-164 bytes a triangle of the largest scene built with it
 // (the dragon's 121 MB), until destroyed. It also keeps the last build's threads, asleep between
 // builds, so that a rebuild does not start them again (none for a build on one thread).
 class BvhBuildMemory {
