@@ -1,6 +1,8 @@
 #pragma once
-// Splits an image into square tiles and hands them to threads dynamically (an atomic counter).
-// Each pixel belongs to exactly one tile, so results never depend on the thread count.
+// Splits an image into square tiles and hands them to threads dynamically: each thread takes the
+// tiles of its own run of neighbouring tiles in row-major order, then helps the others from the
+// back of theirs (parallel_tiles.cpp says why). Each pixel belongs to exactly one tile, so
+// results never depend on the thread count.
 
 #include <atomic>
 #include <cstddef>
@@ -23,8 +25,11 @@ struct TileLoopOptions {
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
-// Runs body(tile) once for each tile of a width x height image, from `threads` threads
-// (the calling thread is one of them). Returns false when cancelled before all tiles were done.
+// Runs body(tile) once for each tile of a width x height image, from `threads` threads (the
+// calling thread is one of them). Tile i (row-major, as tileIndex counts them in the bench) lies
+// in thread w's run when w * n / threads <= i < (w + 1) * n / threads, for n tiles in all; one
+// thread takes every tile in row-major order. Returns false when cancelled before all tiles were
+// done.
 bool forEachTile(int width, int height, const TileLoopOptions& options,
                  const std::function<void(const TileRect&)>& body);
 
