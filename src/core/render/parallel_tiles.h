@@ -26,10 +26,9 @@ struct TileLoopOptions {
 };
 
 // Runs body(tile) once for each tile of a width x height image, from `threads` threads (the
-// calling thread is one of them). Tile i (row-major, as tileIndex counts them in the bench) lies
-// in thread w's run when w * n / threads <= i < (w + 1) * n / threads, for n tiles in all; one
-// thread takes every tile in row-major order. Returns false when cancelled before all tiles were
-// done.
+// calling thread is one of them). Tile i, counted in row-major order, lies in thread w's run
+// when w * n / threads <= i < (w + 1) * n / threads, for n tiles in all; one thread takes every
+// tile in that order. Returns false when cancelled before all tiles were done.
 bool forEachTile(int width, int height, const TileLoopOptions& options,
                  const std::function<void(const TileRect&)>& body);
 
