@@ -105,19 +105,19 @@ void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::si
     HitPacket* hits = &answers.hits[first];
     unsigned* occluded = &answers.occluded[first];
     const bool shadows = blocked.blockShadowRays[block] != 0; // else occluded stays 0
-    int k = 0;
-    for (; k + 1 < count; k += 2) {
+    // As shadeRowPairs: every pair's camera rays, then every pair's shadow rays.
+    const int paired = count / 2 * 2;
+    for (int k = 0; k < paired; k += 2) {
         closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
-        if (!shadows) {
-            continue;
-        }
+    }
+    for (int k = 0; k < paired && shadows; k += 2) {
         const unsigned both = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
                                   ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1])
                                   : 0u;
         occluded[k] = both & 0xffu;
         occluded[k + 1] = both >> kPacketSize;
     }
-    if (k < count) {
+    if (const int k = paired; k < count) {
         closestHit8(bvh, rays[k], hits[k]);
         if (shadows) {
             occluded[k] = shadowRays[k].lanes != 0 ? anyHit8(bvh, shadowRays[k]) : 0u;

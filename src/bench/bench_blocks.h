@@ -77,9 +77,9 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                 BlockAnswers& answers);
 
 // Traces block b as shadeLabBlock does for a scene it does not trace in blocks: its packets two
-// by two as packets of 16 rays (closestHit16 for the camera rays, anyHit16 for the shadow rays),
-// a last odd one as a packet of 8. With BlockLayout::Tiles4x4, a full block is four 4 x 4 tiles,
-// as the renderer's. Sets no flags.
+// by two as packets of 16 rays, every pair's camera rays (closestHit16) and then every pair's
+// shadow rays (anyHit16), a last odd one as a packet of 8. With BlockLayout::Tiles4x4, a full block
+// is four 4 x 4 tiles, as the renderer's. Sets no flags.
 void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
                              BlockAnswers& answers);
 
