@@ -97,7 +97,7 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
 }
 
 void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                             BlockAnswers& answers) {
+                             BlockAnswers& answers, LastOccluder& last) {
     const int count = blocked.rows[block];
     const std::size_t first = block * kPacketSize;
     const RayPacket* rays = &blocked.primary[first];
@@ -112,7 +112,7 @@ void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::si
     }
     for (int k = 0; k < paired && shadows; k += 2) {
         const unsigned both = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
-                                  ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1])
+                                  ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1], last)
                                   : 0u;
         occluded[k] = both & 0xffu;
         occluded[k + 1] = both >> kPacketSize;

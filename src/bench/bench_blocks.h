@@ -10,6 +10,7 @@
 #include "bench_rays.h"
 #include "core/bvh/bvh.h"
 #include "core/bvh/bvh_frustum.h"
+#include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
 #include "core/integrators/lab_shading.h"
 #include "core/ray_packet.h"
@@ -78,9 +79,10 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
 
 // Traces block b as shadeLabBlock does for a scene it does not trace in blocks: its packets two
 // by two as packets of 16 rays, every pair's camera rays (closestHit16) and then every pair's
-// shadow rays (anyHit16), a last odd one as a packet of 8. With BlockLayout::Tiles4x4, a full block
+// shadow rays (anyHit16, with `last`, which the caller carries from block to block of a tile as
+// the renderer does), a last odd one as a packet of 8. With BlockLayout::Tiles4x4, a full block
 // is four 4 x 4 tiles, as the renderer's. Sets no flags.
 void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                             BlockAnswers& answers);
+                             BlockAnswers& answers, LastOccluder& last);
 
 } // namespace raylab::bench

@@ -292,8 +292,9 @@ int run(int argc, char** argv) {
     const BlockedRays tiled = packets16 ? blockRays(rays, BlockLayout::Tiles4x4) : BlockedRays{};
     BlockAnswers pairAnswers = makeBlockAnswers(tiled);
     const TileTracer pairTile = [&](std::size_t tile) {
+        LastOccluder last; // as the renderer's tile loop (lab_pass.cpp)
         for (std::size_t b = tiled.blockOffset[tile]; b < tiled.blockOffset[tile + 1]; ++b) {
-            traceBlockInPacketPairs(bvh, tiled, b, pairAnswers);
+            traceBlockInPacketPairs(bvh, tiled, b, pairAnswers, last);
         }
         traceBounces(tile);
     };

@@ -16,7 +16,7 @@ std::vector<Packet16Path> packet16Paths() {
 }
 
 int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Packet16Path path,
-                   const Scene* scene, int& failures) {
+                   const Scene* scene, int& failures, LastOccluder* last) {
     RayPacket packets[2];
     for (int i = 0; i < count; ++i) {
         packets[i / kPacketSize].set(i % kPacketSize, rays[i]);
@@ -27,6 +27,15 @@ int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Pa
     hits[0].set(0, Hit{1.0f, 0.5f, 0.5f, 3}); // stale contents must be overwritten
     closestHit16(bvh, packets[0], packets[1], hits[0], hits[1], path);
     const unsigned occluded = anyHit16(bvh, packets[0], packets[1], path);
+    if (last != nullptr) {
+        const LastOccluder before = *last;
+        const unsigned withLast = anyHit16(bvh, packets[0], packets[1], path, last);
+        if (withLast != occluded) {
+            ++failures;
+            ADD_FAILURE() << "occluded lanes " << occluded << " without a last occluder, "
+                          << withLast << " with block " << before.block << " slot " << before.slot;
+        }
+    }
     int hitCount = 0;
     for (int i = 0; i < kPacket16Size; ++i) {
         const Hit hit = hits[i / kPacketSize].hit(i % kPacketSize);
@@ -59,10 +68,11 @@ int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Pa
 int expectPackets16(const Bvh& bvh, const std::vector<Ray>& rays, Packet16Path path,
                     const Scene* scene, int size) {
     int hits = 0, failures = 0;
+    LastOccluder last;
     for (std::size_t first = 0; first < rays.size() && failures < 5; first += size) {
         const int count = static_cast<int>(
             std::min<std::size_t>(static_cast<std::size_t>(size), rays.size() - first));
-        hits += expectPacket16(bvh, &rays[first], count, 0xffffu, path, scene, failures);
+        hits += expectPacket16(bvh, &rays[first], count, 0xffffu, path, scene, failures, &last);
     }
     return hits;
 }

@@ -32,10 +32,12 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
 // (traceBlockInPacketPairs); there, with Embree in the process, each pair's shadow rays straight
 // after its camera rays traced Sponza's 16-ray packets 0.90-0.91x as fast, where without Embree
 // in the process, and in the renderer's passes, the two orders run as fast (why is not known).
+// The shadow rays test `last` first and leave their last occluder in it (LastOccluder).
 // 1 <= pairs <= kPacketSize / 2. Call only where bvhPacket16Supported() and bvh.wideNodes is not
 // empty.
 void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                   const RayPacket* rays, int pairs, RadiancePacket* radiance, RayCounts& counts) {
+                   const RayPacket* rays, int pairs, RadiancePacket* radiance, RayCounts& counts,
+                   LastOccluder& last) {
     auto hits = unsetPackets<HitPacket>(std::make_index_sequence<kPacketSize>());
     ShadingBeforeShadow stages[kPacketSize];
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
@@ -49,7 +51,7 @@ void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& set
     }
     for (int k = 0; k < count; k += 2) {
         const unsigned occluded = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
-                                      ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1])
+                                      ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1], last)
                                       : 0u;
         finishShade(stages[k], occluded & 0xffu, radiance[k]);
         finishShade(stages[k + 1], occluded >> kPacketSize, radiance[k + 1]);
@@ -84,13 +86,14 @@ RAYLAB_AVX2 void gatherTile(const RayPacket* rows, int p, RayPacket& tile) {
 // (tilePixel): a square of pixels is a narrower frustum than two rows, so fewer nodes pass its
 // tests. radiance[r] is row r's, as for the rows.
 void shadeTiles(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
-                const RayPacket* rows, RadiancePacket* radiance, RayCounts& counts) {
+                const RayPacket* rows, RadiancePacket* radiance, RayCounts& counts,
+                LastOccluder& last) {
     auto tiles = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     for (int p = 0; p < kPacketSize; ++p) {
         gatherTile(rows, p, tiles[p]);
     }
     RadiancePacket tileRadiance[kPacketSize];
-    shadeRowPairs(scene, bvh, settings, tiles.data(), kPacketSize / 2, tileRadiance, counts);
+    shadeRowPairs(scene, bvh, settings, tiles.data(), kPacketSize / 2, tileRadiance, counts, last);
     for (int p = 0; p < kPacketSize; ++p) {
         for (int half = 0; half < 2; ++half) {
             const BlockPixel corner = tilePixel(p, half * 4);
@@ -118,7 +121,8 @@ bool fullBlock(const RayPacket* rays, int count) {
 // shadeLabBlock, with the camera rays' frustum from `camera` and `rect` when camera is set.
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
-                RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing) {
+                RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing,
+                LastOccluder* lastOccluder) {
     static const bool simd = bvhSimdSupported();
     if (tracing == BlockTracing::ForScene) {
         tracing = tracingFor(bvh);
@@ -127,13 +131,15 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
         static const bool pairs = bvhPacket16Supported();
         int k = 0;
         if (pairs && !bvh.wideNodes.empty()) {
+            LastOccluder blockOnly;
+            LastOccluder& last = lastOccluder != nullptr ? *lastOccluder : blockOnly;
             if (fullBlock(rays, count)) {
-                shadeTiles(scene, bvh, settings, rays, radiance, counts);
+                shadeTiles(scene, bvh, settings, rays, radiance, counts, last);
                 return;
             }
             if (count >= 2) {
                 k = count / 2 * 2;
-                shadeRowPairs(scene, bvh, settings, rays, count / 2, radiance, counts);
+                shadeRowPairs(scene, bvh, settings, rays, count / 2, radiance, counts, last);
             }
         }
         for (; k < count; ++k) {
@@ -189,14 +195,17 @@ BlockTracing tracingFor(const Bvh& bvh) {
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts,
-                   BlockTracing tracing) {
-    shadeBlock(scene, bvh, settings, nullptr, ImageRect{}, rays, count, radiance, counts, tracing);
+                   BlockTracing tracing, LastOccluder* lastOccluder) {
+    shadeBlock(scene, bvh, settings, nullptr, ImageRect{}, rays, count, radiance, counts, tracing,
+               lastOccluder);
 }
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
-                   int count, RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing) {
-    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts, tracing);
+                   int count, RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing,
+                   LastOccluder* lastOccluder) {
+    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts, tracing,
+               lastOccluder);
 }
 
 } // namespace raylab

@@ -89,19 +89,24 @@ RAYLAB_AVX2 inline bool keepBlockHits(LaneBest& best, const BvhTriangleBlock& bl
     return closer;
 }
 
-// Whether h (intersectBlock of `block` for `ray`) holds a hit, the lanes of h.exact through
-// intersectLane.
-inline bool blockHit(const BvhTriangleBlock& block, const LaneHits& h, const Ray& ray) {
+// The slot of a triangle that h (intersectBlock of `block` for `ray`) holds a hit on, the lanes
+// of h.exact through intersectLane; -1 when it holds none.
+inline int blockHitSlot(const BvhTriangleBlock& block, const LaneHits& h, const Ray& ray) {
     if (h.hits != 0) {
-        return true;
+        return __builtin_ctz(h.hits);
     }
     for (unsigned m = h.exact; m != 0; m &= m - 1) {
         float t, u, v;
         if (intersectLane(block, __builtin_ctz(m), ray, t, u, v)) {
-            return true;
+            return __builtin_ctz(m);
         }
     }
-    return false;
+    return -1;
+}
+
+// Whether h (intersectBlock of `block` for `ray`) holds a hit.
+inline bool blockHit(const BvhTriangleBlock& block, const LaneHits& h, const Ray& ray) {
+    return blockHitSlot(block, h, ray) >= 0;
 }
 
 } // namespace raylab

@@ -44,12 +44,13 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
     }
 }
 
-unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path) {
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path,
+                  LastOccluder* last) {
     if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
         return anyHit8(bvh, low) | anyHit8(bvh, high) << kPacketSize;
     }
     unsigned occluded = 0;
-    const unsigned single = anyHitPacket16(bvh, low, high, occluded);
+    const unsigned single = anyHitPacket16(bvh, low, high, occluded, last);
     for (unsigned m = single; m != 0; m &= m - 1) {
         const int i = __builtin_ctz(m);
         if (anyHit(bvh, rayOf(low, high, i))) {
@@ -66,6 +67,10 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
 
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high) {
     return anyHit16(bvh, low, high, defaultPath());
+}
+
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, LastOccluder& last) {
+    return anyHit16(bvh, low, high, defaultPath(), &last);
 }
 
 } // namespace raylab

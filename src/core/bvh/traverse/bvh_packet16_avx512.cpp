@@ -10,7 +10,10 @@
 //   enter, and each other triangle is tested against the active lanes; where fewer lanes reach
 //   a block than it has such triangles, each lane's ray is tested against the block's 8
 //   triangles at once instead (the single-ray traversal's test, bvh_block_ray.h).
-// Each node's children are prefetched as soon as they are taken (prefetchChild).
+// Each node's children are prefetched as soon as they are taken (prefetchChild). Any hit with a
+// LastOccluder (bvh_packet.h) first tests the triangle that occluded a lane of an earlier packet
+// against all 16 lanes, traverses only for the lanes it leaves open, and remembers a triangle
+// that a lane hits in a leaf.
 // Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
 // Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with their helpers on 16 lanes: the
@@ -316,21 +319,33 @@ RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlo
     }
 }
 
-// Whether lane l's ray hits one of the 8 triangles of a block (one test, as keepBlockLane).
-RAYLAB_AVX512 inline bool blockHitsLane(const BvhTriangleBlock& block, const Packet16& p, int l) {
-    return blockHit(block, intersectBlock(block, laneBlockRay(p, l)), rayOf(p.rays, l));
+// The slot of a triangle of a block that lane l's ray hits, -1 when none (one test of the 8, as
+// keepBlockLane).
+RAYLAB_AVX512 inline int blockSlotHitByLane(const BvhTriangleBlock& block, const Packet16& p,
+                                            int l) {
+    return blockHitSlot(block, intersectBlock(block, laneBlockRay(p, l)), rayOf(p.rays, l));
+}
+
+// Leaves slot `slot` of `block` (one of bvh's) in `last`, when given.
+inline void remember(const Bvh& bvh, const BvhTriangleBlock* block, int slot, LastOccluder* last) {
+    if (last != nullptr) {
+        last->block = static_cast<uint32_t>(block - bvh.triangleBlocks.data());
+        last->slot = slot;
+    }
 }
 
 // Tests the triangles of leaf `ref` against the lanes of `active`. Closest hit: keeps the lanes'
 // closest hits in best. Any hit: adds the lanes that hit to `found`, drops them from `active`,
-// and stops when none is left. Per block, whichever costs fewer tests of 8 or 16 lanes:
+// leaves a triangle that one hit in `last` (when given), and stops when no lane is left. Per block,
+// whichever costs fewer tests of 8 or 16 lanes:
 // - each triangle some lane may hit before limitMax (frustumTriangles) against the 16 lanes;
 // - or, when fewer lanes are active than that, each lane's ray against the whole block
-//   (keepBlockLane, blockHitsLane): the single-ray traversal's leaf test. A lone lane takes it
+//   (keepBlockLane, blockSlotHitByLane): the single-ray traversal's leaf test. A lone lane takes it
 //   without the frustum test, which costs about as much as the block's.
 template <bool closest>
 RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16& p, float limitMax,
-                                   PacketBest16* best, unsigned& active, unsigned& found) {
+                                   PacketBest16* best, unsigned& active, unsigned& found,
+                                   LastOccluder* last) {
     const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
     for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
         const int lanes = __builtin_popcount(active);
@@ -342,9 +357,10 @@ RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16&
                 const int l = __builtin_ctz(m);
                 if constexpr (closest) {
                     keepBlockLane(*best, *block, p, l);
-                } else if (blockHitsLane(*block, p, l)) {
+                } else if (const int slot = blockSlotHitByLane(*block, p, l); slot >= 0) {
                     found |= 1u << l;
                     active &= ~(1u << l);
+                    remember(bvh, block, slot, last);
                 }
             }
             continue;
@@ -355,8 +371,11 @@ RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16&
                 keepTriangle16(*best, *block, tri, p.rays, active);
             } else {
                 const unsigned hit = hitLanes16(*block, tri, p.rays, active);
-                found |= hit;
-                active &= ~hit;
+                if (hit != 0) {
+                    found |= hit;
+                    active &= ~hit;
+                    remember(bvh, block, tri, last);
+                }
             }
         }
     }
@@ -383,7 +402,7 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
             }
         } else {
             unsigned found = 0;
-            testLeaf<true>(bvh, ref, p, limitMax, &best, active, found);
+            testLeaf<true>(bvh, ref, p, limitMax, &best, active, found, nullptr);
             limit = _mm512_min_ps(p.rays.tMax, best.t);
             limitMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), limit);
             _mm512_store_ps(laneLimit, limit);
@@ -408,15 +427,22 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
     }
 }
 
-RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
+RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p, LastOccluder* last) {
+    unsigned found = 0; // lanes with a hit
+    if (last != nullptr && last->block < bvh.triangleBlocks.size()) {
+        found = hitLanes16(bvh.triangleBlocks[last->block], last->slot & (kWideLanes - 1), p.rays,
+                           p.lanes);
+        if (found == p.lanes) {
+            return found;
+        }
+    }
     const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.rays.tMax);
     alignas(64) float laneTMax[kPacket16Size];
     _mm512_store_ps(laneTMax, p.rays.tMax);
-    unsigned found = 0;                      // lanes with a hit
     PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
     int size = 0;
     uint32_t ref = 0;
-    unsigned active = p.lanes;
+    unsigned active = p.lanes & ~found;
     for (;;) {
         if (!isLeaf(ref)) {
             const int n = hitChildren16<false>(bvh, bvh.wideNodes[ref], p, p.rays.tMax, laneTMax,
@@ -426,7 +452,7 @@ RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p) {
                 continue;
             }
         } else {
-            testLeaf<false>(bvh, ref, p, tMaxMax, nullptr, active, found);
+            testLeaf<false>(bvh, ref, p, tMaxMax, nullptr, active, found, last);
             if (found == p.lanes) {
                 return found;
             }
@@ -466,7 +492,7 @@ RAYLAB_AVX512 unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low,
 }
 
 RAYLAB_AVX512 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
-                                      unsigned& occluded) {
+                                      unsigned& occluded, LastOccluder* last) {
     Packet16 p;
     if (!makePacket16(low, high, p)) {
         unsigned lowOccluded = 0, highOccluded = 0;
@@ -475,7 +501,7 @@ RAYLAB_AVX512 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, cons
         occluded = lowOccluded | highOccluded << kPacketSize;
         return others;
     }
-    occluded = p.lanes != 0 ? anyHit16Avx512(bvh, p) : 0u;
+    occluded = p.lanes != 0 ? anyHit16Avx512(bvh, p, last) : 0u;
     return p.others;
 }
 
@@ -521,7 +547,8 @@ unsigned closestHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, HitP
                             HitPacket&) {
     return 0;
 }
-unsigned anyHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, unsigned& occluded) {
+unsigned anyHitPacket16(const Bvh&, const RayPacket&, const RayPacket&, unsigned& occluded,
+                        LastOccluder*) {
     occluded = 0;
     return 0;
 }

@@ -6,6 +6,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/bvh_frustum.h"
+#include "bvh/bvh_packet.h"
 #include "ray_packet.h"
 
 namespace raylab {
@@ -20,17 +21,19 @@ enum class Packet16Path { Avx512, TwoPackets8 };
 
 void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
                   HitPacket& highHits, Packet16Path path);
-unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path);
+unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path,
+                  LastOccluder* last = nullptr);
 
 // Traces low and high as one packet when the packets of their lanes (makePacket: the valid rays
 // sharing a half's most common ray permutation) have the same permutation, else each as its own
 // 8-lane packet (closestHitPacket, anyHitPacket). Every lane of lowHits and highHits is written;
-// `occluded` gets the traced lanes that hit something (16 bits). Returns the lanes left for the
-// single-ray path (16 bits).
+// `occluded` gets the traced lanes that hit something (16 bits); with `last`, its triangle is
+// tested first and a triangle that occluded a lane is left in it (LastOccluder). Returns the
+// lanes left for the single-ray path (16 bits).
 unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
                             HitPacket& lowHits, HitPacket& highHits);
 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
-                        unsigned& occluded);
+                        unsigned& occluded, LastOccluder* last = nullptr);
 
 // closestHitCandidates and anyHitCandidates (bvh_frustum.h) of low and high at once, each
 // candidate tested against the 16 lanes in one AVX-512 triangle test, when every valid lane of
