@@ -109,10 +109,10 @@ TEST_P(BvhPacket16, DegenerateAndNonFiniteTriangles) {
 
 // The shadow rays of the lab's box towards its light, in 16-ray packets: the AVX-512 path leaves
 // in a LastOccluder a triangle that one of a packet's occluded rays hits (the two 8-ray packets'
-// path leaves none), and a remembered
-// triangle changes no answer: not for rays that stop just short of their first hit (which would
-// hit it further on), nor when it names no block of this BVH. (expectPackets16 carries one from
-// packet to packet through every suite here and in test_bvh_packet.cpp.)
+// path leaves none), and a remembered triangle changes no answer: not for rays that stop just
+// short of their first hit (which would hit it further on), nor when it names no block of this
+// BVH. (expectPackets16 carries one from packet to packet through every suite here and in
+// test_bvh_packet.cpp.)
 TEST_P(BvhPacket16, LastOccluderChangesNoAnswer) {
     const Scene box = makeCornellBox();
     const Bvh bvh = buildBvh(box);
@@ -128,7 +128,8 @@ TEST_P(BvhPacket16, LastOccluderChangesNoAnswer) {
         LastOccluder last;
         const unsigned occluded = anyHit16(bvh, packets[0], packets[1], GetParam(), &last);
         occludedPackets += occluded != 0 ? 1 : 0;
-        // Lanes of another ray permutation than the packet's go their own way and leave nothing.
+        // Nothing is left where no lane of the 16-ray traversal was occluded (lanes of another ray
+        // permutation than the packet's go their own way), nor on the two 8-ray packets' path.
         if (last.block == LastOccluder::kNone) {
             continue;
         }
