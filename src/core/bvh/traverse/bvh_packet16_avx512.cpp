@@ -3,6 +3,7 @@
 // costs one ray, as in Embree's coherent packets:
 // - a frustum (the interval of the lanes' origins and inverse directions) tests all 8 children
 //   at once and leaves out every child no lane can enter;
+// - when it leaves out all 8, the visit ends there (14-39% of a camera packet's on the meshes);
 // - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
 //   every active lane (a superset of the lanes that enter it) and the frustum's entry distance;
 // - only the other candidates are tested lane by lane (hitChild16);
@@ -231,6 +232,9 @@ RAYLAB_AVX512 inline int hitChildren16(const Bvh& bvh, const BvhWideNode& node, 
     alignas(32) float fn[kWideLanes];
     if (p.frustum.valid) {
         candidates = frustumBoxes(&node.lower[0][0], p.frustum, limitMax, frustumNear);
+        if (candidates == 0) {
+            return 0; // no lane enters a child
+        }
         _mm256_store_ps(fn, frustumNear);
         const int l = __builtin_ctz(active);
         firstLane = candidates & laneChildren(node, p.scalars, l, laneLimit[l]);
