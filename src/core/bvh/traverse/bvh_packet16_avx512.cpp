@@ -92,8 +92,12 @@ RAYLAB_AVX512 inline void makeFrustum(Packet16& p) {
         // lower[a] starts at float a * 8, upper[a] at 24 + a * 8.
         f.nearOffset[a] = nearIsUpper * 24 + a * kWideLanes;
         f.farOffset[a] = (1 - nearIsUpper) * 24 + a * kWideLanes;
-        const float originMin = _mm512_mask_reduce_min_ps(lanes, p.rays.origin[a]);
-        const float originMax = _mm512_mask_reduce_max_ps(lanes, p.rays.origin[a]);
+        // Lanes that share one origin (a camera packet's) have it as both bounds: no reductions.
+        const float first = p.scalars.origin[a][__builtin_ctz(p.lanes)];
+        const bool shared = _mm512_mask_cmp_ps_mask(lanes, p.rays.origin[a], _mm512_set1_ps(first),
+                                                    _CMP_NEQ_UQ) == 0;
+        const float originMin = shared ? first : _mm512_mask_reduce_min_ps(lanes, p.rays.origin[a]);
+        const float originMax = shared ? first : _mm512_mask_reduce_max_ps(lanes, p.rays.origin[a]);
         // Towards +a the near distance is smallest from the largest origin, the far distance
         // largest from the smallest one; towards -a the other way round.
         f.nearOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMin : originMax);
