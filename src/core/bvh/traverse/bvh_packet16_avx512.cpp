@@ -3,7 +3,7 @@
 // costs one ray, as in Embree's coherent packets:
 // - a frustum (the interval of the lanes' origins and inverse directions) tests all 8 children
 //   at once and leaves out every child no lane can enter;
-// - when it leaves out all 8, the visit ends there (14-39% of a camera packet's on the meshes);
+// - when it leaves out all 8, the visit ends there (14-39% of a camera packet's node visits);
 // - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
 //   every active lane (a superset of the lanes that enter it) and the frustum's entry distance;
 // - only the other candidates are tested lane by lane (hitChild16);
