@@ -105,10 +105,15 @@ void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::si
     HitPacket* hits = &answers.hits[first];
     unsigned* occluded = &answers.occluded[first];
     const bool shadows = blocked.blockShadowRays[block] != 0; // else occluded stays 0
-    // As shadeRowPairs: every pair's camera rays, then every pair's shadow rays.
+    // As shadeRowPairs: the camera rays (a block of 8 rows as 64 rays), then every pair's shadow
+    // rays.
     const int paired = count / 2 * 2;
-    for (int k = 0; k < paired; k += 2) {
-        closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
+    if (count == kPacketSize) {
+        closestHit64(bvh, rays, hits);
+    } else {
+        for (int k = 0; k < paired; k += 2) {
+            closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
+        }
     }
     for (int k = 0; k < paired && shadows; k += 2) {
         const unsigned both = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0

@@ -77,11 +77,11 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                 std::size_t block, const glm::vec3& light, bool shadowFrustum,
                 BlockAnswers& answers);
 
-// Traces block b as shadeLabBlock does for a scene it does not trace in blocks: its packets two
-// by two as packets of 16 rays, every pair's camera rays (closestHit16) and then every pair's
-// shadow rays (anyHit16, with `last`, which the caller carries from block to block of a tile as
-// the renderer does), a last odd one as a packet of 8. With BlockLayout::Tiles4x4, a full block
-// is four 4 x 4 tiles, as the renderer's. Sets no flags.
+// Traces block b as shadeLabBlock does for a scene it does not trace in blocks: the camera rays
+// of a block of 8 rows as one packet of 64 (closestHit64), of fewer rows two by two as packets of
+// 16 (closestHit16), then every pair's shadow rays (anyHit16, with `last`, which the caller
+// carries from block to block of a tile as the renderer does), a last odd row as a packet of 8.
+// With BlockLayout::Tiles4x4, a full block is four 4 x 4 tiles, as the renderer's. Sets no flags.
 void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
                              BlockAnswers& answers, LastOccluder& last);
 

@@ -8,6 +8,10 @@
 
 namespace raylab::accel_test {
 
+std::string packet16PathName(const ::testing::TestParamInfo<Packet16Path>& path) {
+    return path.param == Packet16Path::Avx512 ? "Avx512" : "TwoPackets8";
+}
+
 std::vector<Packet16Path> packet16Paths() {
     if (bvhPacket16Supported()) {
         return {Packet16Path::Avx512, Packet16Path::TwoPackets8};
@@ -74,6 +78,58 @@ int expectPackets16(const Bvh& bvh, const std::vector<Ray>& rays, Packet16Path p
             std::min<std::size_t>(static_cast<std::size_t>(size), rays.size() - first));
         hits += expectPacket16(bvh, &rays[first], count, 0xffffu, path, scene, failures, &last);
     }
+    return hits;
+}
+
+int expectPacket64(const Bvh& bvh, const Ray* rays, int count, uint64_t mask, Packet16Path path,
+                   const Scene* scene, int& failures) {
+    constexpr int kPackets = 8;
+    RayPacket packets[kPackets];
+    for (int i = 0; i < count; ++i) {
+        packets[i / kPacketSize].set(i % kPacketSize, rays[i]);
+    }
+    for (int k = 0; k < kPackets; ++k) {
+        packets[k].lanes &= static_cast<unsigned>(mask >> (kPacketSize * k)) & 0xffu;
+    }
+    HitPacket hits[kPackets];
+    for (HitPacket& h : hits) {
+        h.set(0, Hit{1.0f, 0.5f, 0.5f, 3}); // stale contents must be overwritten
+    }
+    closestHit64(bvh, packets, hits, path);
+    int hitCount = 0;
+    for (int i = 0; i < kPackets * kPacketSize; ++i) {
+        const Hit hit = hits[i / kPacketSize].hit(i % kPacketSize);
+        if (i >= count || ((mask >> i) & 1u) == 0) {
+            if (hit.found()) {
+                ++failures;
+                ADD_FAILURE() << "lane " << i << " without a ray answered";
+            }
+            continue;
+        }
+        const Ray& ray = rays[i];
+        const Hit single = closestHit(bvh, ray);
+        bool ok = sameHit(hit, single) && sameHit(hit, closestHitScalar(bvh, ray));
+        if (scene != nullptr) {
+            ok = ok && sameHit(hit, closestHitBruteForce(*scene, ray));
+        }
+        if (!ok && failures++ < 5) {
+            ADD_FAILURE() << "lane " << i << ": packet t=" << hit.t << " tri=" << hit.triangle
+                          << ", single t=" << single.t << " tri=" << single.triangle;
+        }
+        hitCount += single.found() ? 1 : 0;
+    }
+    return hitCount;
+}
+
+int expectPackets64(const Bvh& bvh, const std::vector<Ray>& rays, Packet16Path path,
+                    const Scene* scene) {
+    constexpr std::size_t kSize = 64;
+    int hits = 0, failures = 0;
+    for (std::size_t first = 0; first < rays.size() && failures < 5; first += kSize) {
+        const int count = static_cast<int>(std::min(kSize, rays.size() - first));
+        hits += expectPacket64(bvh, &rays[first], count, ~uint64_t{0}, path, scene, failures);
+    }
+    EXPECT_EQ(failures, 0);
     return hits;
 }
 

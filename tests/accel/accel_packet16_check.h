@@ -1,15 +1,21 @@
 #pragma once
-// Checks of 16-ray packets (closestHit16, anyHit16) against single rays, the scalar reference
-// and brute force, lane by lane, bit for bit.
+// Checks of 16-ray packets (closestHit16, anyHit16) and of 64-ray packets (closestHit64)
+// against single rays, the scalar reference and brute force, lane by lane, bit for bit.
 
 #include "core/bvh/bvh.h"
 #include "core/bvh/traverse/bvh_packet16_traverse.h"
 #include "core/ray.h"
 #include "core/scene.h"
 
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <string>
 #include <vector>
 
 namespace raylab::accel_test {
+
+// A path's name in the tests' names: Avx512, TwoPackets8.
+std::string packet16PathName(const ::testing::TestParamInfo<Packet16Path>& path);
 
 // The paths this CPU can run: the two 8-ray packets always, the AVX-512 packet where it has it.
 std::vector<Packet16Path> packet16Paths();
@@ -27,5 +33,16 @@ int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Pa
 // LastOccluder carried from each packet to the next.
 int expectPackets16(const Bvh& bvh, const std::vector<Ray>& rays, Packet16Path path,
                     const Scene* scene = nullptr, int size = kPacket16Size);
+
+// Traces rays[0, count) (count <= 64; ray 8 k + i as lane i of packet k) on `path` with
+// closestHit64, only the lanes of `mask` set, and expects each of those lanes to equal the single
+// ray's closestHit and closestHitScalar (and brute force when `scene` is given), and every other
+// lane to hold no hit. Returns how many lanes hit; adds failures to `failures`.
+int expectPacket64(const Bvh& bvh, const Ray* rays, int count, uint64_t mask, Packet16Path path,
+                   const Scene* scene, int& failures);
+
+// All of `rays` in packets of 64 consecutive rays (the last one partial) on `path`.
+int expectPackets64(const Bvh& bvh, const std::vector<Ray>& rays, Packet16Path path,
+                    const Scene* scene = nullptr);
 
 } // namespace raylab::accel_test

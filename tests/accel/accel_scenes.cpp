@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 namespace raylab::accel_test {
 
@@ -24,6 +25,23 @@ Scene makeTriangleSoup(int count, float size, uint32_t seed) {
         scene.triangles.push_back(
             {c + uniformIn(rng, size), c + uniformIn(rng, size), c + uniformIn(rng, size), 0});
     }
+    return scene;
+}
+
+Scene makeTripledSoup() {
+    Scene scene = makeTriangleSoup(1500, 0.15f, 29);
+    const std::vector<Triangle> once = scene.triangles;
+    scene.triangles.insert(scene.triangles.end(), once.rbegin(), once.rend());
+    scene.triangles.insert(scene.triangles.end(), once.begin(), once.end());
+    return scene;
+}
+
+Scene makeSoupWithDegenerateTriangles() {
+    Scene scene = makeTriangleSoup(1000, 0.2f, 3);
+    scene.triangles[10].v0.x = std::numeric_limits<float>::quiet_NaN();
+    scene.triangles[20].v1.y = std::numeric_limits<float>::infinity();
+    scene.triangles[40].v1 = scene.triangles[40].v0;                                   // zero area
+    scene.triangles[50].v2 = 0.5f * (scene.triangles[50].v0 + scene.triangles[50].v1); // collinear
     return scene;
 }
 

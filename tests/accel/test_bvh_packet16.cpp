@@ -15,14 +15,11 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
-#include <limits>
 #include <random>
 #include <string>
 
 namespace raylab::accel_test {
 namespace {
-
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 class BvhPacket16 : public ::testing::TestWithParam<Packet16Path> {
 protected:
@@ -83,10 +80,7 @@ TEST_P(BvhPacket16, LaneMasksWithGaps) {
 // camera rays) or, with few lanes left in a leaf, block by block against each lane's ray
 // (random rays).
 TEST_P(BvhPacket16, CoincidentTrianglesGiveTheLowestIndexInEveryLane) {
-    Scene scene = makeTriangleSoup(1500, 0.15f, 29);
-    const std::vector<Triangle> once = scene.triangles;
-    scene.triangles.insert(scene.triangles.end(), once.rbegin(), once.rend());
-    scene.triangles.insert(scene.triangles.end(), once.begin(), once.end());
+    const Scene scene = makeTripledSoup();
     const Bvh bvh = buildBvh(scene);
     Camera camera;
     camera.position = {0.0f, 0.0f, -2.5f};
@@ -95,11 +89,7 @@ TEST_P(BvhPacket16, CoincidentTrianglesGiveTheLowestIndexInEveryLane) {
 }
 
 TEST_P(BvhPacket16, DegenerateAndNonFiniteTriangles) {
-    Scene scene = makeTriangleSoup(1000, 0.2f, 3);
-    scene.triangles[10].v0.x = kNaN;
-    scene.triangles[20].v1.y = kInfinity;
-    scene.triangles[40].v1 = scene.triangles[40].v0;                                   // zero area
-    scene.triangles[50].v2 = 0.5f * (scene.triangles[50].v0 + scene.triangles[50].v1); // collinear
+    const Scene scene = makeSoupWithDegenerateTriangles();
     const Bvh bvh = buildBvh(scene);
     Camera camera;
     camera.position = {0.0f, 0.0f, -2.5f};
@@ -177,10 +167,7 @@ TEST_P(BvhPacket16, LastOccluderChangesNoAnswer) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, BvhPacket16,
                          ::testing::Values(Packet16Path::Avx512, Packet16Path::TwoPackets8),
-                         [](const ::testing::TestParamInfo<Packet16Path>& path) {
-                             return path.param == Packet16Path::Avx512 ? std::string("Avx512")
-                                                                       : std::string("TwoPackets8");
-                         });
+                         packet16PathName);
 
 } // namespace
 } // namespace raylab::accel_test

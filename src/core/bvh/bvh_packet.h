@@ -28,6 +28,13 @@ void anyHit8(const Bvh& bvh, const Ray* rays, int count, bool* occluded);
 void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
                   HitPacket& highHits);
 
+// Packets of 64 rays: rays[0, 8), each pair rays[2w], rays[2w + 1] as closestHit16's low and
+// high, into hits[0, 8), with the same answers as closestHit8 of each. Where the CPU has AVX-512
+// the four pairs are traced in one walk of the BVH, whose node visits then serve 64 rays; else as
+// four closestHit16 calls. For the camera rays of a block of 8 x 8 pixels, each pair a 4 x 4 tile
+// (tilePixel, lab_shading.h).
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits);
+
 // Bits 0-7: the lanes of low.lanes whose ray hits a triangle; bits 8-15: those of high.lanes.
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high);
 

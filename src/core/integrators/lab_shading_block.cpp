@@ -2,8 +2,9 @@
 // camera rays and one for their shadow rays (bvh_frustum.h), and packets whose frustum holds too
 // many triangles are traced one by one through the BVH; packet by packet, a block is traced as
 // packets of 16 rays where the CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles,
-// else its rows two by two; without AVX-512, row by row. Either way each lane's radiance is
-// shadeLab8's.
+// else its rows two by two, and the camera rays of a block of 8 rows as one packet of 64
+// (closestHit64, the four 16-ray packets in one walk); without AVX-512, row by row. Either way each
+// lane's radiance is shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -26,15 +27,15 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
     return {((void)I, Packet(RayPacket::Unset{}))...};
 }
 
-// shadeLab8 of packets rays[0, 2 * pairs), two by two as 16 rays: every pair's camera rays
-// (closestHit16) with their shading up to the shadow test, then every pair's shadow rays
-// (anyHit16). raylab-bench traces a block's 16-ray packets in this order too
-// (traceBlockInPacketPairs); there, with Embree in the process, each pair's shadow rays straight
-// after its camera rays traced Sponza's 16-ray packets 0.90-0.91x as fast, where without Embree
-// in the process, and in the renderer's passes, the two orders run as fast (why is not known).
-// The shadow rays test `last` first and leave their last occluder in it (LastOccluder).
-// 1 <= pairs <= kPacketSize / 2. Call only where bvhPacket16Supported() and bvh.wideNodes is not
-// empty.
+// shadeLab8 of packets rays[0, 2 * pairs): the camera rays of all 8 rows at once as 64 rays
+// (closestHit64) when there are 8, else two by two as 16 rays (closestHit16), and their shading
+// up to the shadow test; then every pair's shadow rays (anyHit16). raylab-bench traces a block's
+// 16-ray packets in this order too (traceBlockInPacketPairs); there, with Embree in the process,
+// each pair's shadow rays straight after its camera rays traced Sponza's 16-ray packets 0.90-0.91x
+// as fast, where without Embree in the process, and in the renderer's passes, the two orders run as
+// fast (why is not known). The shadow rays test `last` first and leave their last occluder in it
+// (LastOccluder). 1 <= pairs <= kPacketSize / 2. Call only where bvhPacket16Supported() and
+// bvh.wideNodes is not empty.
 void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int pairs, RadiancePacket* radiance, RayCounts& counts,
                    LastOccluder& last) {
@@ -42,12 +43,16 @@ void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& set
     ShadingBeforeShadow stages[kPacketSize];
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     const int count = 2 * pairs;
-    for (int k = 0; k < count; k += 2) {
-        closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
-        for (int j = k; j < k + 2; ++j) {
-            counts.primary += static_cast<std::uint64_t>(laneCount(rays[j].lanes));
-            beginShade(scene, settings, rays[j], hits[j], stages[j], shadowRays[j], counts);
+    if (count == kPacketSize) {
+        closestHit64(bvh, rays, hits.data());
+    } else {
+        for (int k = 0; k < count; k += 2) {
+            closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
         }
+    }
+    for (int k = 0; k < count; ++k) {
+        counts.primary += static_cast<std::uint64_t>(laneCount(rays[k].lanes));
+        beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
     }
     for (int k = 0; k < count; k += 2) {
         const unsigned occluded = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0

@@ -1,12 +1,6 @@
-// GCC 12's AVX-512 intrinsics start from _mm512_undefined_*() values, which its
-// -Wuninitialized reports in the intrinsics' own headers; the pragma must come before the first
-// include of those headers. (Clang does not warn there.)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-
 #include "render/exact_sum_simd.h"
+
+#include "avx512_warnings.h" // first: before any intrinsics header
 
 #include <cstdint>
 #include <cstring>

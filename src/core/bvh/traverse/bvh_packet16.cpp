@@ -44,6 +44,21 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
     }
 }
 
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path) {
+    if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
+        for (int k = 0; k < kPacketSize; k += 2) {
+            closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1], path);
+        }
+        return;
+    }
+    const uint64_t single = closestHitPacket64(bvh, rays, hits);
+    for (uint64_t m = single; m != 0; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const int k = i / kPacketSize, lane = i % kPacketSize;
+        hits[k].set(lane, closestHit(bvh, rays[k].ray(lane)));
+    }
+}
+
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path,
                   LastOccluder* last) {
     if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
@@ -63,6 +78,10 @@ unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, P
 void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, HitPacket& lowHits,
                   HitPacket& highHits) {
     closestHit16(bvh, low, high, lowHits, highHits, defaultPath());
+}
+
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits) {
+    closestHit64(bvh, rays, hits, defaultPath());
 }
 
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high) {

@@ -35,6 +35,17 @@ unsigned closestHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacke
 unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& high,
                         unsigned& occluded, LastOccluder* last = nullptr);
 
+// closestHit64 (bvh_packet.h) on `path`: the AVX-512 walk of 64 rays (closestHitPacket64), or
+// four closestHit16 calls on the two 8-ray packets' path.
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path);
+
+// Traces the eight RayPackets rays[0, 8) as four 16-ray packets (rays[2w] lanes 0-7 and
+// rays[2w + 1] lanes 8-15 of packet w, as closestHitPacket16's low and high) in one walk of the
+// BVH. A pair whose halves have different permutations is traced as two 8-lane packets
+// (closestHitPacket). Every lane of hits[0, 8) is written; returns the lanes left for the
+// single-ray path (bit 8 k + i: lane i of rays[k]).
+uint64_t closestHitPacket64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits);
+
 // closestHitCandidates and anyHitCandidates (bvh_frustum.h) of low and high at once, each
 // candidate tested against the 16 lanes in one AVX-512 triangle test, when every valid lane of
 // both shares one ray permutation (the common case of a block's rays); then every lane of

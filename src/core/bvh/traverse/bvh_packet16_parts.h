@@ -1,0 +1,228 @@
+#pragma once
+// What the 16-ray and 64-ray packet traversals share (internal to bvh_packet16_avx512.cpp and
+// bvh_packet64_avx512.cpp, the only files that may include it: it runs only on CPUs with
+// AVX-512F): a packet of 16 rays set up (makePacket16), its frustum and the frustum's test of 8
+// boxes at once, and one lane's own tests of a node's children and of a block's triangles.
+
+#include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_block_ray.h"
+#include "bvh/traverse/bvh_packet16_lanes.h"
+#include "bvh/traverse/bvh_packet_traverse.h"
+
+namespace raylab::packet16_lanes {
+
+// Bounds of the 16 rays' box test, for all 8 children of a node at once: per axis, the interval
+// of the lanes' origins and of their inverse directions, so that for every lane
+// (bound - origin) * inverse lies within [min, max] of the products at the intervals' ends
+// (float subtraction and multiplication round monotonically). Valid when, per axis, every lane's
+// inverse has one sign: then the near bound is the same plane of the box for all of them.
+struct Frustum {
+    bool valid = false;
+    int nearOffset[3], farOffset[3];    // into BvhWideNode's floats, as in bvh_traverse_avx2.cpp
+    __m256 nearOrigin[3], farOrigin[3]; // the origins that make (bound - origin) smallest, largest
+    __m256 inverseMin[3], inverseMax[3];
+    __m256 tMin; // the lanes' smallest tMin
+};
+
+// Each lane's constants as floats, for tests of one lane's ray: the box test's, and the shear
+// and tMax of the triangle test (whose origin in permuted order is origin[k]).
+struct alignas(64) LaneScalars {
+    float origin[3][kPacket16Size], inverse[3][kPacket16Size], tMin[kPacket16Size];
+    float shear[3][kPacket16Size], tMax[kPacket16Size];
+};
+
+// The 16 rays.
+struct Packet16 {
+    PacketRays16 rays;
+    unsigned lanes = 0;  // 16 bits: the lanes traced
+    unsigned others = 0; // valid lanes of another permutation (single-ray path)
+    Frustum frustum;
+    LaneScalars scalars;
+};
+
+RAYLAB_AVX512 inline void makeFrustum(Packet16& p) {
+    Frustum& f = p.frustum;
+    const __mmask16 lanes = static_cast<__mmask16>(p.lanes);
+    f.valid = p.lanes != 0;
+    for (int a = 0; a < 3 && f.valid; ++a) {
+        const unsigned negative =
+            _mm512_mask_cmp_ps_mask(lanes, p.rays.inverse[a], _mm512_setzero_ps(), _CMP_LT_OQ);
+        f.valid = negative == 0 || negative == p.lanes;
+        const int nearIsUpper = negative != 0 ? 1 : 0;
+        // lower[a] starts at float a * 8, upper[a] at 24 + a * 8.
+        f.nearOffset[a] = nearIsUpper * 24 + a * kWideLanes;
+        f.farOffset[a] = (1 - nearIsUpper) * 24 + a * kWideLanes;
+        // Lanes that share one origin (a camera packet's) have it as both bounds: no reductions.
+        const float first = p.scalars.origin[a][__builtin_ctz(p.lanes)];
+        const bool shared = _mm512_mask_cmp_ps_mask(lanes, p.rays.origin[a], _mm512_set1_ps(first),
+                                                    _CMP_NEQ_UQ) == 0;
+        const float originMin = shared ? first : _mm512_mask_reduce_min_ps(lanes, p.rays.origin[a]);
+        const float originMax = shared ? first : _mm512_mask_reduce_max_ps(lanes, p.rays.origin[a]);
+        // Towards +a the near distance is smallest from the largest origin, the far distance
+        // largest from the smallest one; towards -a the other way round.
+        f.nearOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMin : originMax);
+        f.farOrigin[a] = _mm256_set1_ps(nearIsUpper != 0 ? originMax : originMin);
+        f.inverseMin[a] = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.rays.inverse[a]));
+        f.inverseMax[a] = _mm256_set1_ps(_mm512_mask_reduce_max_ps(lanes, p.rays.inverse[a]));
+    }
+    f.tMin = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.rays.tMin));
+}
+
+// Of 8 boxes given as lower[3][8] then upper[3][8] floats (BvhWideNode's layout), those some
+// lane may enter before `limitMax` (the lanes' largest limit): a superset of the boxes any lane's
+// own slab test keeps (hitChild16), since each lane's near distance is at least the frustum's
+// and its far distance at most the frustum's. Also their frustum near distances.
+RAYLAB_AVX512 inline unsigned frustumBoxes(const float* bounds, const Frustum& f, float limitMax,
+                                           __m256& tNear) {
+    __m256 tn = f.tMin, tf = _mm256_set1_ps(limitMax);
+    for (int a = 0; a < 3; ++a) {
+        const __m256 xn = _mm256_sub_ps(_mm256_load_ps(bounds + f.nearOffset[a]), f.nearOrigin[a]);
+        const __m256 xf = _mm256_sub_ps(_mm256_load_ps(bounds + f.farOffset[a]), f.farOrigin[a]);
+        tn = _mm256_max_ps(tn, _mm256_min_ps(_mm256_mul_ps(xn, f.inverseMin[a]),
+                                             _mm256_mul_ps(xn, f.inverseMax[a])));
+        tf = _mm256_min_ps(tf, _mm256_max_ps(_mm256_mul_ps(xf, f.inverseMin[a]),
+                                             _mm256_mul_ps(xf, f.inverseMax[a])));
+    }
+    tNear = tn;
+    return static_cast<unsigned>(_mm256_movemask_ps(
+        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
+}
+
+// The bounding boxes of a block's 8 triangles, each widened by `pad` (Bvh::boxPad) as every node
+// box is, in BvhWideNode's layout (lower[3][8] then upper[3][8]) for frustumBoxes.
+struct alignas(32) TriangleBounds {
+    float bounds[2][3][kWideLanes];
+};
+
+RAYLAB_AVX512 inline TriangleBounds triangleBounds(const BvhTriangleBlock& block, float pad) {
+    TriangleBounds b;
+    for (int a = 0; a < 3; ++a) {
+        const __m256 v0 = _mm256_load_ps(block.vertex[0][a]);
+        const __m256 v1 = _mm256_load_ps(block.vertex[1][a]);
+        const __m256 v2 = _mm256_load_ps(block.vertex[2][a]);
+        const __m256 widen = _mm256_set1_ps(pad);
+        _mm256_store_ps(b.bounds[0][a],
+                        _mm256_sub_ps(_mm256_min_ps(_mm256_min_ps(v0, v1), v2), widen));
+        _mm256_store_ps(b.bounds[1][a],
+                        _mm256_add_ps(_mm256_max_ps(_mm256_max_ps(v0, v1), v2), widen));
+    }
+    return b;
+}
+
+// The triangles of a block (their triangleBounds) that some lane may hit before `limitMax`: those
+// whose widened box passes frustumBoxes (a ray the watertight test finds on a triangle enters that
+// box, as it enters every node box holding the triangle); all 8 without a valid frustum.
+RAYLAB_AVX512 inline unsigned frustumTriangles(const TriangleBounds& b, const Frustum& f,
+                                               float limitMax) {
+    if (!f.valid) {
+        return 0xffu;
+    }
+    __m256 tNear;
+    return frustumBoxes(&b.bounds[0][0][0], f, limitMax, tNear);
+}
+
+// The children lane l's own ray enters before limit[l] (bvh_traverse_avx2.cpp's hitChildren for
+// that one ray, with plain min and max of the two planes so that it holds for either sign).
+RAYLAB_AVX512 inline unsigned laneChildren(const BvhWideNode& node, const LaneScalars& s, int l,
+                                           float limit) {
+    __m256 tn = _mm256_set1_ps(s.tMin[l]), tf = _mm256_set1_ps(limit);
+    for (int a = 0; a < 3; ++a) {
+        const __m256 o = _mm256_set1_ps(s.origin[a][l]);
+        const __m256 inv = _mm256_set1_ps(s.inverse[a][l]);
+        const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.lower[a]), o), inv);
+        const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.upper[a]), o), inv);
+        tn = _mm256_max_ps(tn, _mm256_min_ps(t0, t1));
+        tf = _mm256_min_ps(tf, _mm256_max_ps(t0, t1));
+    }
+    return static_cast<unsigned>(_mm256_movemask_ps(
+        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
+}
+
+// Sets up the 16 rays: each half's packet (makePacket: the valid lanes sharing its most common
+// permutation), joined; at once when all valid lanes share one (makeSharedPacket16). False when
+// the halves' packets have different permutations.
+RAYLAB_AVX512 inline bool makePacket16(const RayPacket& low, const RayPacket& high, Packet16& p) {
+    if (makeSharedPacket16(low, high, p.rays, p.lanes)) {
+        p.others = 0;
+    } else {
+        PacketRays half[2];
+        makePacket(low, half[0]);
+        makePacket(high, half[1]);
+        PacketRays& a = half[0];
+        PacketRays& b = half[1];
+        if (a.lanes != 0 && b.lanes != 0 &&
+            (a.k[0] != b.k[0] || a.k[1] != b.k[1] || a.k[2] != b.k[2])) {
+            return false;
+        }
+        // A half without lanes takes the other's permutation: its registers are never read.
+        PacketRays& empty = a.lanes == 0 ? a : b;
+        const PacketRays& full = a.lanes == 0 ? b : a;
+        if (empty.lanes == 0) {
+            for (int i = 0; i < 3; ++i) {
+                empty.k[i] = full.k[i];
+                empty.vertexOffset[i] = full.vertexOffset[i];
+                empty.originK[i] = full.originK[i];
+            }
+            empty.shearX = full.shearX;
+            empty.shearY = full.shearY;
+            empty.shearZ = full.shearZ;
+        }
+        p.lanes = a.lanes | b.lanes << kPacketSize;
+        p.others = a.others | b.others << kPacketSize;
+        joinPacket(a, b, low, high, p.rays);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        _mm512_store_ps(p.scalars.origin[axis], p.rays.origin[axis]);
+        _mm512_store_ps(p.scalars.inverse[axis], p.rays.inverse[axis]);
+    }
+    _mm512_store_ps(p.scalars.tMin, p.rays.tMin);
+    _mm512_store_ps(p.scalars.shear[0], p.rays.shearX);
+    _mm512_store_ps(p.scalars.shear[1], p.rays.shearY);
+    _mm512_store_ps(p.scalars.shear[2], p.rays.shearZ);
+    _mm512_store_ps(p.scalars.tMax, p.rays.tMax);
+    makeFrustum(p);
+    return true;
+}
+
+// Lane l's ray with the single-ray traversal's constants (the same values: makePacket16's
+// quotients are WatertightRay's, lane by lane).
+RAYLAB_AVX512 inline BlockRay laneBlockRay(const Packet16& p, int l) {
+    BlockRay r;
+    for (int a = 0; a < 3; ++a) {
+        r.vertexOffset[a] = p.rays.vertexOffset[a];
+        r.originK[a] = _mm256_set1_ps(p.scalars.origin[r.vertexOffset[a] / kWideLanes][l]);
+    }
+    r.shearX = _mm256_set1_ps(p.scalars.shear[0][l]);
+    r.shearY = _mm256_set1_ps(p.scalars.shear[1][l]);
+    r.shearZ = _mm256_set1_ps(p.scalars.shear[2][l]);
+    r.tMin = _mm256_set1_ps(p.scalars.tMin[l]);
+    r.tMax = _mm256_set1_ps(p.scalars.tMax[l]);
+    return r;
+}
+
+// The 8 triangles of a block against lane l's ray in one test (the single-ray traversal's,
+// bvh_block_ray.h), each hit kept in best for that lane when closer by the (t, triangle) rule:
+// what keepTriangle16 would keep for the lane, triangle by triangle.
+RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlock& block,
+                                        const Packet16& p, int l) {
+    const LaneHits h = intersectBlock(block, laneBlockRay(p, l));
+    if ((h.hits | h.exact) == 0) {
+        return;
+    }
+    const __m512i lane = _mm512_set1_epi32(l);
+    LaneBest laneBest{_mm512_cvtss_f32(_mm512_permutexvar_ps(lane, best.t)),
+                      static_cast<uint32_t>(_mm_cvtsi128_si32(
+                          _mm512_castsi512_si128(_mm512_permutexvar_epi32(lane, best.triangle)))),
+                      0.0f, 0.0f, 1.0f}; // e1, e2, det: written with t
+    if (keepBlockHits(laneBest, block, h, rayOf(p.rays, l))) {
+        const auto only = static_cast<__mmask16>(1u << l);
+        best.t = _mm512_mask_mov_ps(best.t, only, _mm512_set1_ps(laneBest.t));
+        best.e1 = _mm512_mask_mov_ps(best.e1, only, _mm512_set1_ps(laneBest.e1));
+        best.e2 = _mm512_mask_mov_ps(best.e2, only, _mm512_set1_ps(laneBest.e2));
+        best.det = _mm512_mask_mov_ps(best.det, only, _mm512_set1_ps(laneBest.det));
+        best.triangle = _mm512_mask_mov_epi32(
+            best.triangle, only, _mm512_set1_epi32(static_cast<int>(laneBest.triangle)));
+    }
+}
+
+} // namespace raylab::packet16_lanes

@@ -1,0 +1,312 @@
+// Closest hits of 64 rays in one walk of the 8-wide BVH (AVX-512F): four 16-ray packets
+// (makePacket16, each two RayPackets) that share one frustum. For a block of 8 x 8 camera rays
+// (four 4 x 4 tiles) a node visit then serves 64 rays where the 16-ray traversal
+// (bvh_packet16_avx512.cpp) serves 16, for about the same fixed cost, and a wider frustum keeps
+// a few more children:
+// - the frustum of the 64 rays (the four packets' frustums joined) tests all 8 children at once;
+//   when it leaves out all 8, the visit ends there;
+// - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
+//   every active lane and the frustum's entry distance;
+// - the other candidates are tested against each packet with active lanes (hitChild16); the
+//   child is taken with the lanes that enter it and the least of their entry distances;
+// - in a leaf each packet with active lanes tests the block's triangles as the 16-ray traversal
+//   does, with its own (narrower) frustum: the triangles it may hit against its 16 lanes, or,
+//   where it has fewer active lanes than such triangles, each lane's ray against the whole block.
+// A pending child is visited again only for the lanes whose closest hit so far lies beyond its
+// entry distance. Each culling test keeps a superset of the lanes' own slab tests, and every
+// triangle test is the 16-ray packets', so each lane's answer is the single ray's bit for bit.
+// A pair of RayPackets whose halves have different ray permutations goes its own way (the two
+// 8-lane packets), and lanes of other permutations within a half to the single-ray path, as in
+// the 16-ray packets.
+
+#include "avx512_warnings.h" // first: before any intrinsics header
+#include "bvh/traverse/bvh_packet16_traverse.h"
+
+#if defined(__x86_64__) || defined(__i386__)
+
+#include "bvh/traverse/bvh_packet16_parts.h"
+
+#include <algorithm>
+
+namespace raylab {
+
+namespace {
+
+using namespace packet16_lanes;
+
+// Four packets of 16 rays; lane 16 w + l of the 64 is lane l of packet w.
+constexpr int kPackets = 4;
+
+struct Packet64 {
+    Packet16 packet[kPackets]; // a packet traced on its own, or without lanes, has lanes == 0
+    Frustum frustum;           // of every packet's lanes
+    uint64_t lanes = 0;
+};
+
+// Packet w's 16 lanes of a 64-lane mask.
+inline unsigned packetLanes(uint64_t lanes, int w) {
+    return static_cast<unsigned>(lanes >> (kPacket16Size * w)) & 0xffffu;
+}
+
+inline uint64_t asLanes64(unsigned lanes, int w) {
+    return static_cast<uint64_t>(lanes) << (kPacket16Size * w);
+}
+
+// The frustum of the packets' lanes: each packet's frustum (makeFrustum) bounds its lanes, so
+// their joined intervals bound all of them. Invalid when a packet's is, or when two packets'
+// inverse directions differ in sign on an axis.
+RAYLAB_AVX512 inline Frustum joinFrustums(const Packet64& p) {
+    Frustum f;
+    bool any = false;
+    for (const Packet16& q : p.packet) {
+        if (q.lanes == 0) {
+            continue;
+        }
+        const Frustum& g = q.frustum;
+        if (!g.valid) {
+            return Frustum{};
+        }
+        if (!any) {
+            f = g;
+            any = true;
+            continue;
+        }
+        for (int a = 0; a < 3; ++a) {
+            if (g.nearOffset[a] != f.nearOffset[a]) {
+                return Frustum{};
+            }
+            // As makeFrustum: towards -a (near bound upper) the near origin is the smallest.
+            const bool nearIsUpper = f.nearOffset[a] >= 3 * kWideLanes;
+            f.nearOrigin[a] = nearIsUpper ? _mm256_min_ps(f.nearOrigin[a], g.nearOrigin[a])
+                                          : _mm256_max_ps(f.nearOrigin[a], g.nearOrigin[a]);
+            f.farOrigin[a] = nearIsUpper ? _mm256_max_ps(f.farOrigin[a], g.farOrigin[a])
+                                         : _mm256_min_ps(f.farOrigin[a], g.farOrigin[a]);
+            f.inverseMin[a] = _mm256_min_ps(f.inverseMin[a], g.inverseMin[a]);
+            f.inverseMax[a] = _mm256_max_ps(f.inverseMax[a], g.inverseMax[a]);
+        }
+        f.tMin = _mm256_min_ps(f.tMin, g.tMin);
+    }
+    f.valid = any;
+    return f;
+}
+
+struct Entry64 {
+    float tNear; // at most the entry distance of each of its lanes
+    uint32_t ref;
+    uint64_t lanes; // a superset of the lanes whose ray enters the box
+};
+
+// The closest hits so far and what they bound: per packet, each lane's limit min(tMax, best t)
+// and the largest of them; as floats per lane for laneChildren; the largest of all.
+struct Limits64 {
+    PacketBest16 best[kPackets];
+    __m512 limit[kPackets];
+    float packetMax[kPackets];
+    alignas(64) float lane[kPacket16Size * kPackets];
+    float max = -kInfinity;
+};
+
+// Sets limits from the closest hits of the packets with lanes in `changed`.
+RAYLAB_AVX512 inline void updateLimits(const Packet64& p, uint64_t changed, Limits64& s) {
+    s.max = -kInfinity;
+    for (int w = 0; w < kPackets; ++w) {
+        const Packet16& q = p.packet[w];
+        if (packetLanes(changed, w) != 0) {
+            s.limit[w] = _mm512_min_ps(q.rays.tMax, s.best[w].t);
+            s.packetMax[w] = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(q.lanes), s.limit[w]);
+            _mm512_store_ps(s.lane + kPacket16Size * w, s.limit[w]);
+        }
+        s.max = std::max(s.max, s.packetMax[w]);
+    }
+}
+
+// The children of a node that some lane of `active` may enter (the header comment says how),
+// each prefetched (prefetchChild), written to out[0, n) nearest last by their tNear. Returns n.
+RAYLAB_AVX512 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, const Packet64& p,
+                                       const Limits64& s, uint64_t active, Entry64* out) {
+    unsigned candidates = 0xffu, firstLane = 0;
+    alignas(32) float frustumNear[kWideLanes];
+    if (p.frustum.valid) {
+        __m256 tNear;
+        candidates = frustumBoxes(&node.lower[0][0], p.frustum, s.max, tNear);
+        if (candidates == 0) {
+            return 0; // no lane enters a child
+        }
+        _mm256_store_ps(frustumNear, tNear);
+        const int l = __builtin_ctzll(active);
+        firstLane = candidates & laneChildren(node, p.packet[l / kPacket16Size].scalars,
+                                              l % kPacket16Size, s.lane[l]);
+    }
+    int n = 0;
+    for (unsigned m = candidates; m != 0; m &= m - 1) {
+        const int c = __builtin_ctz(m);
+        if (node.child[c] == kWideEmpty) {
+            continue;
+        }
+        float tNear = 0.0f;
+        uint64_t lanes = 0;
+        if ((firstLane >> c) & 1u) {
+            tNear = frustumNear[c];
+            lanes = active;
+        } else {
+            __m512 least = _mm512_set1_ps(kInfinity);
+            for (int w = 0; w < kPackets; ++w) {
+                const unsigned a = packetLanes(active, w);
+                if (a == 0) {
+                    continue;
+                }
+                __m512 t;
+                const unsigned hit = hitChild16(node, c, p.packet[w].rays, s.limit[w], t) & a;
+                lanes |= asLanes64(hit, w);
+                least = _mm512_mask_min_ps(least, static_cast<__mmask16>(hit), least, t);
+            }
+            if (lanes == 0) {
+                continue;
+            }
+            tNear = _mm512_reduce_min_ps(least);
+        }
+        prefetchChild(bvh, node.child[c]);
+        int i = n++;
+        for (; i > 0 && out[i - 1].tNear < tNear; --i) {
+            out[i] = out[i - 1];
+        }
+        out[i] = Entry64{tNear, node.child[c], lanes};
+    }
+    return n;
+}
+
+// Tests the triangles of leaf `ref` against the lanes of `active`, packet by packet, each as the
+// 16-ray traversal's closest hit does (testLeaf there), and keeps the lanes' closest hits.
+RAYLAB_AVX512 inline void testLeaf64(const Bvh& bvh, uint32_t ref, const Packet64& p,
+                                     uint64_t active, Limits64& s) {
+    const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+    for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
+        const unsigned distinct = distinctTriangles(*block);
+        const TriangleBounds bounds = triangleBounds(*block, bvh.boxPad);
+        for (int w = 0; w < kPackets; ++w) {
+            const unsigned a = packetLanes(active, w);
+            if (a == 0) {
+                continue;
+            }
+            const Packet16& q = p.packet[w];
+            const int lanes = __builtin_popcount(a);
+            const unsigned candidates =
+                distinct &
+                (lanes == 1 ? 0xffu : frustumTriangles(bounds, q.frustum, s.packetMax[w]));
+            if (lanes < __builtin_popcount(candidates)) {
+                for (unsigned m = a; m != 0; m &= m - 1) {
+                    keepBlockLane(s.best[w], *block, q, __builtin_ctz(m));
+                }
+                continue;
+            }
+            for (unsigned m = candidates; m != 0; m &= m - 1) {
+                keepTriangle16(s.best[w], *block, __builtin_ctz(m), q.rays, a);
+            }
+        }
+    }
+}
+
+// Traces p (lanes != 0) and writes the hits of the packets in `traced` (bit w: hits[2w, 2w + 2)).
+RAYLAB_AVX512 void closestHit64Avx512(const Bvh& bvh, const Packet64& p, unsigned traced,
+                                      HitPacket* hits) {
+    Limits64 s;
+    for (int w = 0; w < kPackets; ++w) {
+        s.best[w] = noHitYet16();
+        s.limit[w] = _mm512_set1_ps(kInfinity);
+        s.packetMax[w] = -kInfinity;
+    }
+    updateLimits(p, p.lanes, s);
+    const __m512 roundUp = _mm512_set1_ps(kBoxRoundUp);
+    Entry64 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
+    int size = 0;
+    uint32_t ref = 0;
+    uint64_t active = p.lanes;
+    for (;;) {
+        if (!isLeaf(ref)) {
+            const int n = hitChildren64(bvh, bvh.wideNodes[ref], p, s, active, stack + size);
+            if (n > 0) {
+                size += n - 1;
+                ref = stack[size].ref;
+                active = stack[size].lanes;
+                continue;
+            }
+        } else {
+            testLeaf64(bvh, ref, p, active, s);
+            updateLimits(p, active, s);
+        }
+        // Next: the nearest pending entry that some lane may still find a closer hit in.
+        for (;;) {
+            if (size == 0) {
+                for (int w = 0; w < kPackets; ++w) {
+                    if ((traced >> w) & 1u) {
+                        for (int h = 0; h < 2; ++h) {
+                            writeBest(halfOf(s.best[w], h), halfLanes(p.packet[w].lanes, h),
+                                      hits[2 * w + h]);
+                        }
+                    }
+                }
+                return;
+            }
+            const Entry64& e = stack[--size];
+            const __m512 tNear = _mm512_set1_ps(e.tNear);
+            uint64_t open = 0;
+            for (int w = 0; w < kPackets; ++w) {
+                if (const unsigned a = packetLanes(e.lanes, w); a != 0) {
+                    open |=
+                        asLanes64(a & _mm512_cmp_ps_mask(tNear, _mm512_mul_ps(s.limit[w], roundUp),
+                                                         _CMP_LE_OQ),
+                                  w);
+                }
+            }
+            if (open != 0) {
+                ref = e.ref;
+                active = open;
+                break;
+            }
+        }
+    }
+}
+
+} // namespace
+
+RAYLAB_AVX512 uint64_t closestHitPacket64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits) {
+    Packet64 p;
+    uint64_t single = 0;
+    unsigned traced = 0; // packets traced in the 64-ray walk
+    for (int w = 0; w < kPackets; ++w) {
+        Packet16& q = p.packet[w];
+        if (!makePacket16(rays[2 * w], rays[2 * w + 1], q)) {
+            single |= asLanes64(closestHitPacket(bvh, rays[2 * w], hits[2 * w]) |
+                                    closestHitPacket(bvh, rays[2 * w + 1], hits[2 * w + 1])
+                                        << kPacketSize,
+                                w);
+            q.lanes = 0;
+            continue;
+        }
+        traced |= 1u << w;
+        single |= asLanes64(q.others, w);
+        p.lanes |= asLanes64(q.lanes, w);
+    }
+    if (p.lanes == 0) {
+        for (int w = 0; w < kPackets; ++w) {
+            if ((traced >> w) & 1u) {
+                hits[2 * w].clear();
+                hits[2 * w + 1].clear();
+            }
+        }
+        return single;
+    }
+    p.frustum = joinFrustums(p);
+    closestHit64Avx512(bvh, p, traced, hits);
+    return single;
+}
+
+} // namespace raylab
+
+#else // not x86: bvhPacket16Supported() is false, so this is never called.
+
+namespace raylab {
+uint64_t closestHitPacket64(const Bvh&, const RayPacket*, HitPacket*) { return 0; }
+} // namespace raylab
+
+#endif
