@@ -195,7 +195,7 @@ void printText(std::ostream& out, const BenchReport& r) {
             printRow(out, "raylab (blocks)", r.raylabBlocks);
         }
         if (r.packets16) {
-            printRow(out, "raylab (16-ray packets)", r.raylabPackets16);
+            printRow(out, "raylab (16/64-ray packets)", r.raylabPackets16);
         }
         printRow(out, "raylab (1 ray)", r.raylabSingle);
     } else {
@@ -233,7 +233,7 @@ void printText(std::ostream& out, const BenchReport& r) {
             << format("%.1f", percent(r.shadowBlocksThroughCandidates, r.shadowBlocks)) << "%)\n";
     }
     if (r.packets16) {
-        printRatio(out, "16-ray packets / packets", r.raylabPackets16, r.raylabPackets, r);
+        printRatio(out, "16/64-ray packets / packets", r.raylabPackets16, r.raylabPackets, r);
         out << "answers differing from packets: " << r.packet16Mismatches << "\n";
     }
     if (r.passes) {

@@ -2,7 +2,8 @@
 // What the 16-ray and 64-ray packet traversals share (internal to bvh_packet16_avx512.cpp and
 // bvh_packet64_avx512.cpp, the only files that may include it: it runs only on CPUs with
 // AVX-512F): a packet of 16 rays set up (makePacket16), its frustum and the frustum's test of 8
-// boxes at once, and one lane's own tests of a node's children and of a block's triangles.
+// boxes at once, one lane's own tests of a node's children and of a block's triangles, and the
+// test of a leaf's triangles against the packet's lanes (testLeaf).
 
 #include "bvh/build/bvh_collapse.h"
 #include "bvh/traverse/bvh_block_ray.h"
@@ -222,6 +223,70 @@ RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlo
         best.det = _mm512_mask_mov_ps(best.det, only, _mm512_set1_ps(laneBest.det));
         best.triangle = _mm512_mask_mov_epi32(
             best.triangle, only, _mm512_set1_epi32(static_cast<int>(laneBest.triangle)));
+    }
+}
+
+// The slot of a triangle of a block that lane l's ray hits, -1 when none (one test of the 8, as
+// keepBlockLane).
+RAYLAB_AVX512 inline int blockSlotHitByLane(const BvhTriangleBlock& block, const Packet16& p,
+                                            int l) {
+    return blockHitSlot(block, intersectBlock(block, laneBlockRay(p, l)), rayOf(p.rays, l));
+}
+
+// Leaves slot `slot` of `block` (one of bvh's) in `last`, when given.
+inline void remember(const Bvh& bvh, const BvhTriangleBlock* block, int slot, LastOccluder* last) {
+    if (last != nullptr) {
+        last->block = static_cast<uint32_t>(block - bvh.triangleBlocks.data());
+        last->slot = slot;
+    }
+}
+
+// Tests the triangles of leaf `ref` against the lanes of `active`. Closest hit: keeps the lanes'
+// closest hits in best. Any hit: adds the lanes that hit to `found`, drops them from `active`,
+// leaves a triangle that one hit in `last` (when given), and stops when no lane is left. Per block,
+// whichever costs fewer tests of 8 or 16 lanes:
+// - each triangle some lane may hit before limitMax (frustumTriangles) against the 16 lanes;
+// - or, when fewer lanes are active than that, each lane's ray against the whole block
+//   (keepBlockLane, blockSlotHitByLane): the single-ray traversal's leaf test. A lone lane takes it
+//   without the frustum test, which costs about as much as the block's.
+template <bool closest>
+RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16& p, float limitMax,
+                                   PacketBest16* best, unsigned& active, unsigned& found,
+                                   LastOccluder* last) {
+    const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+    for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
+        const int lanes = __builtin_popcount(active);
+        const unsigned candidates =
+            distinctTriangles(*block) &
+            (lanes == 1
+                 ? 0xffu
+                 : frustumTriangles(triangleBounds(*block, bvh.boxPad), p.frustum, limitMax));
+        if (lanes < __builtin_popcount(candidates)) {
+            for (unsigned m = active; m != 0; m &= m - 1) {
+                const int l = __builtin_ctz(m);
+                if constexpr (closest) {
+                    keepBlockLane(*best, *block, p, l);
+                } else if (const int slot = blockSlotHitByLane(*block, p, l); slot >= 0) {
+                    found |= 1u << l;
+                    active &= ~(1u << l);
+                    remember(bvh, block, slot, last);
+                }
+            }
+            continue;
+        }
+        for (unsigned m = candidates; m != 0 && active != 0; m &= m - 1) {
+            const int tri = __builtin_ctz(m);
+            if constexpr (closest) {
+                keepTriangle16(*best, *block, tri, p.rays, active);
+            } else {
+                const unsigned hit = hitLanes16(*block, tri, p.rays, active);
+                if (hit != 0) {
+                    found |= hit;
+                    active &= ~hit;
+                    remember(bvh, block, tri, last);
+                }
+            }
+        }
     }
 }
 

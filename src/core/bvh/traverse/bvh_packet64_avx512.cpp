@@ -1,23 +1,22 @@
 // Closest hits of 64 rays in one walk of the 8-wide BVH (AVX-512F): four 16-ray packets
 // (makePacket16, each two RayPackets) that share one frustum. For a block of 8 x 8 camera rays
 // (four 4 x 4 tiles) a node visit then serves 64 rays where the 16-ray traversal
-// (bvh_packet16_avx512.cpp) serves 16, for about the same fixed cost, and a wider frustum keeps
-// a few more children:
+// (bvh_packet16_avx512.cpp) serves 16, for about the same fixed cost; the wider frustum keeps a
+// few more children:
 // - the frustum of the 64 rays (the four packets' frustums joined) tests all 8 children at once;
 //   when it leaves out all 8, the visit ends there;
 // - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
 //   every active lane and the frustum's entry distance;
 // - the other candidates are tested against each packet with active lanes (hitChild16); the
 //   child is taken with the lanes that enter it and the least of their entry distances;
-// - in a leaf each packet with active lanes tests the block's triangles as the 16-ray traversal
-//   does, with its own (narrower) frustum: the triangles it may hit against its 16 lanes, or,
-//   where it has fewer active lanes than such triangles, each lane's ray against the whole block.
-// A pending child is visited again only for the lanes whose closest hit so far lies beyond its
-// entry distance. Each culling test keeps a superset of the lanes' own slab tests, and every
-// triangle test is the 16-ray packets', so each lane's answer is the single ray's bit for bit.
-// A pair of RayPackets whose halves have different ray permutations goes its own way (the two
-// 8-lane packets), and lanes of other permutations within a half to the single-ray path, as in
-// the 16-ray packets.
+// - in a leaf each packet with active lanes is tested as the 16-ray traversal tests it
+//   (testLeaf), with its own, narrower frustum;
+// - a pending child is visited again only for the lanes whose closest hit so far lies beyond its
+//   entry distance.
+// Each culling test keeps a superset of the lanes' own slab tests, and every triangle test is the
+// 16-ray packets', so each lane's answer is the single ray's bit for bit. A pair of RayPackets
+// whose halves have different ray permutations goes its own way (two 8-lane packets), and lanes
+// of other permutations within a half to the single-ray path, as in the 16-ray packets.
 
 #include "avx512_warnings.h" // first: before any intrinsics header
 #include "bvh/traverse/bvh_packet16_traverse.h"
@@ -120,6 +119,18 @@ RAYLAB_AVX512 inline void updateLimits(const Packet64& p, uint64_t changed, Limi
     }
 }
 
+// The limits of p's lanes before any hit: their tMax.
+RAYLAB_AVX512 inline Limits64 startLimits(const Packet64& p) {
+    Limits64 s;
+    for (int w = 0; w < kPackets; ++w) {
+        s.best[w] = noHitYet16();
+        s.limit[w] = _mm512_set1_ps(kInfinity);
+        s.packetMax[w] = -kInfinity;
+    }
+    updateLimits(p, p.lanes, s);
+    return s;
+}
+
 // The children of a node that some lane of `active` may enter (the header comment says how),
 // each prefetched (prefetchChild), written to out[0, n) nearest last by their tNear. Returns n.
 RAYLAB_AVX512 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, const Packet64& p,
@@ -176,32 +187,15 @@ RAYLAB_AVX512 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, 
 }
 
 // Tests the triangles of leaf `ref` against the lanes of `active`, packet by packet, each as the
-// 16-ray traversal's closest hit does (testLeaf there), and keeps the lanes' closest hits.
+// 16-ray traversal does (testLeaf), and keeps the lanes' closest hits in s.best.
 RAYLAB_AVX512 inline void testLeaf64(const Bvh& bvh, uint32_t ref, const Packet64& p,
                                      uint64_t active, Limits64& s) {
-    const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
-    for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
-        const unsigned distinct = distinctTriangles(*block);
-        const TriangleBounds bounds = triangleBounds(*block, bvh.boxPad);
-        for (int w = 0; w < kPackets; ++w) {
-            const unsigned a = packetLanes(active, w);
-            if (a == 0) {
-                continue;
-            }
-            const Packet16& q = p.packet[w];
-            const int lanes = __builtin_popcount(a);
-            const unsigned candidates =
-                distinct &
-                (lanes == 1 ? 0xffu : frustumTriangles(bounds, q.frustum, s.packetMax[w]));
-            if (lanes < __builtin_popcount(candidates)) {
-                for (unsigned m = a; m != 0; m &= m - 1) {
-                    keepBlockLane(s.best[w], *block, q, __builtin_ctz(m));
-                }
-                continue;
-            }
-            for (unsigned m = candidates; m != 0; m &= m - 1) {
-                keepTriangle16(s.best[w], *block, __builtin_ctz(m), q.rays, a);
-            }
+    for (int w = 0; w < kPackets; ++w) {
+        unsigned lanes = packetLanes(active, w);
+        if (lanes != 0) {
+            unsigned found = 0; // any hit only
+            testLeaf<true>(bvh, ref, p.packet[w], s.packetMax[w], &s.best[w], lanes, found,
+                           nullptr);
         }
     }
 }
@@ -209,13 +203,7 @@ RAYLAB_AVX512 inline void testLeaf64(const Bvh& bvh, uint32_t ref, const Packet6
 // Traces p (lanes != 0) and writes the hits of the packets in `traced` (bit w: hits[2w, 2w + 2)).
 RAYLAB_AVX512 void closestHit64Avx512(const Bvh& bvh, const Packet64& p, unsigned traced,
                                       HitPacket* hits) {
-    Limits64 s;
-    for (int w = 0; w < kPackets; ++w) {
-        s.best[w] = noHitYet16();
-        s.limit[w] = _mm512_set1_ps(kInfinity);
-        s.packetMax[w] = -kInfinity;
-    }
-    updateLimits(p, p.lanes, s);
+    Limits64 s = startLimits(p);
     const __m512 roundUp = _mm512_set1_ps(kBoxRoundUp);
     Entry64 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top
     int size = 0;
