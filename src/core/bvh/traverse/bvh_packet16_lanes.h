@@ -1,10 +1,10 @@
 #pragma once
 // The per-lane work of the 16-ray packets on 16 lanes at once (internal to the AVX-512 packet
 // traversals, bvh_packet16_avx512.cpp and bvh_packet64_avx512.cpp through bvh_packet16_parts.h,
-// the only files that may include it: it runs only on CPUs with AVX-512F): a child box of a node and a triangle of a BvhTriangleBlock against the 16 rays, and
-// the closest hit per lane kept as (t, triangle index). Each is the 8-lane packets' own
-// (bvh_packet_lanes.h) on twice the lanes, with the same operations in the same order, so the
-// answers are theirs bit for bit.
+// the only files that may include it: it runs only on CPUs with AVX-512F): a child box of a node
+// and a triangle of a BvhTriangleBlock against the 16 rays, and the closest hit per lane kept as
+// (t, triangle index). Each is the 8-lane packets' own (bvh_packet_lanes.h) on twice the lanes,
+// with the same operations in the same order, so the answers are theirs bit for bit.
 
 #include "bvh/traverse/bvh_packet16_traverse.h"
 #include "bvh/traverse/bvh_packet_lanes.h"
