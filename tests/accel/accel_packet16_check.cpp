@@ -2,6 +2,7 @@
 
 #include "accel_check.h"
 #include "core/bvh/bvh_packet.h"
+#include "core/triangle_intersection.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -38,6 +39,33 @@ int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Pa
             ++failures;
             ADD_FAILURE() << "occluded lanes " << occluded << " without a last occluder, "
                           << withLast << " with block " << before.block << " slot " << before.slot;
+        }
+        // A triangle newly remembered (by the traversal or from the remembered one's block) is one
+        // that an occluded lane's ray hits within its range.
+        if (last->block != before.block || last->slot != before.slot) {
+            bool hitByAnOccludedRay = false;
+            if (last->block < bvh.triangleBlocks.size() && last->slot >= 0 &&
+                last->slot < kWideLanes) {
+                const BvhTriangleBlock& block = bvh.triangleBlocks[last->block];
+                const int s = last->slot;
+                const glm::vec3 v[3] = {
+                    {block.vertex[0][0][s], block.vertex[0][1][s], block.vertex[0][2][s]},
+                    {block.vertex[1][0][s], block.vertex[1][1][s], block.vertex[1][2][s]},
+                    {block.vertex[2][0][s], block.vertex[2][1][s], block.vertex[2][2][s]}};
+                for (unsigned m = withLast; m != 0; m &= m - 1) {
+                    const Ray& ray = rays[__builtin_ctz(m)];
+                    float t, u, v2;
+                    hitByAnOccludedRay =
+                        hitByAnOccludedRay ||
+                        (intersectTriangle(WatertightRay(ray), v[0], v[1], v[2], t, u, v2) &&
+                         t >= ray.tMin && t <= ray.tMax);
+                }
+            }
+            if (!hitByAnOccludedRay) {
+                ++failures;
+                ADD_FAILURE() << "block " << last->block << " slot " << last->slot
+                              << " remembered, which no occluded lane of " << withLast << " hits";
+            }
         }
     }
     int hitCount = 0;

@@ -24,7 +24,8 @@ std::vector<Packet16Path> packet16Paths();
 // with only the lanes of `mask` set, and expects each of those lanes to equal the single ray's
 // closestHit, closestHitScalar, anyHit and anyHitScalar (and brute force when `scene` is given),
 // and every other lane to hold no hit. With `last`, the any-hit answers again with that
-// LastOccluder (tested first, then updated) must be the same. Returns how many lanes hit; adds
+// LastOccluder (its triangle and block tested first, then updated) must be the same, and a
+// triangle it names anew must be one an occluded lane's ray hits. Returns how many lanes hit; adds
 // failures to `failures`.
 int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Packet16Path path,
                    const Scene* scene, int& failures, LastOccluder* last = nullptr);

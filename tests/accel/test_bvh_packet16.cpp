@@ -99,10 +99,10 @@ TEST_P(BvhPacket16, DegenerateAndNonFiniteTriangles) {
 
 // The shadow rays of the lab's box towards its light, in 16-ray packets: the AVX-512 path leaves
 // in a LastOccluder a triangle that one of a packet's occluded rays hits (the two 8-ray packets'
-// path leaves none), and a remembered triangle changes no answer: not for rays that stop just
-// short of their first hit (which would hit it further on), nor when it names no block of this
-// BVH. (expectPackets16 carries one from packet to packet through every suite here and in
-// test_bvh_packet.cpp.)
+// path leaves none), and a remembered triangle (with the rest of its block, tested next) changes
+// no answer: not for rays that stop just short of their first hit (which would hit it further
+// on), nor when it names no block of this BVH. (expectPackets16 carries one from packet to packet
+// through every suite here and in test_bvh_packet.cpp.)
 TEST_P(BvhPacket16, LastOccluderChangesNoAnswer) {
     const Scene box = makeCornellBox();
     const Bvh bvh = buildBvh(box);

@@ -40,18 +40,20 @@ unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high);
 
 // The triangle that last occluded a lane of anyHit16's 16-ray packets on one BVH. Neighbouring
 // shadow rays towards one light are often blocked by the same triangle (PERFORMANCE.md, "The
-// last occluder first"), so each call tests it against its lanes before the traversal, which
-// then traces only the lanes it does not occlude. The answers are the same as without it: a lane it
-// occludes is one the traversal finds occluded. A caller keeps one for a run of coherent packets on
-// one BVH (a block's, a tile's); a default-made one tests nothing first. Used by the AVX-512 path
-// only.
+// last occluder first"), so each call tests it against its lanes before the traversal, and then
+// the other triangles of its block (its neighbours in the BVH) against the lanes it leaves open;
+// the traversal traces only the lanes still open. The answers are the same as without it: a lane
+// one of those triangles occludes is one the traversal finds occluded. A caller keeps one for a run
+// of coherent packets on one BVH (a block's, a tile's); a default-made one tests nothing first.
+// Used by the AVX-512 path only.
 struct LastOccluder {
     static constexpr uint32_t kNone = ~0u;
     uint32_t block = kNone; // index into Bvh::triangleBlocks, or kNone
     int slot = 0;           // the triangle's slot in that block, 0-7
 };
 
-// anyHit16 that tests last's triangle first and leaves in `last` a triangle that occluded a lane.
+// anyHit16 that tests last's triangle and block first and leaves in `last` a triangle that
+// occluded a lane.
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, LastOccluder& last);
 
 // True when closestHit16 and anyHit16 trace 16 rays at once (AVX-512F and AVX2).

@@ -13,8 +13,8 @@
 //   triangles at once instead (the single-ray traversal's test, bvh_block_ray.h).
 // Each node's children are prefetched as soon as they are taken (prefetchChild). Any hit with a
 // LastOccluder (bvh_packet.h) first tests the triangle that occluded a lane of an earlier packet
-// against all 16 lanes, traverses only for the lanes it leaves open, and remembers a triangle
-// that a lane hits in a leaf.
+// against all 16 lanes, then the other triangles of its block against the lanes left open,
+// traverses only for the lanes still open, and remembers a triangle that a lane hits.
 // Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
 // Exactness is the 8-lane packets' (bvh_packet_avx2.cpp), with their helpers on 16 lanes: the
@@ -159,16 +159,41 @@ RAYLAB_AVX512 unsigned closestHit16Avx512(const Bvh& bvh, const Packet16& p, Hit
     }
 }
 
+// The lanes of p that the triangles of last's block (one of bvh's) occlude: last's triangle
+// against all lanes, then, while some are open, each other triangle of its block that an open lane
+// may hit (frustumTriangles) against the open lanes. Neighbouring shadow rays that last's triangle
+// leaves open are often blocked by a triangle next to it. last's slot moves to a triangle that
+// occludes a lane.
+RAYLAB_AVX512 inline unsigned lastOccluderLanes(const Bvh& bvh, const Packet16& p, float tMaxMax,
+                                                LastOccluder& last) {
+    const BvhTriangleBlock& block = bvh.triangleBlocks[last.block];
+    const int slot = last.slot & (kWideLanes - 1);
+    unsigned found = hitLanes16(block, slot, p.rays, p.lanes);
+    if (found == p.lanes) {
+        return found;
+    }
+    const unsigned others = distinctTriangles(block) & ~(1u << slot) &
+                            frustumTriangles(block, bvh.boxPad, p.frustum, tMaxMax);
+    for (unsigned m = others; m != 0 && found != p.lanes; m &= m - 1) {
+        const int tri = __builtin_ctz(m);
+        const unsigned hit = hitLanes16(block, tri, p.rays, p.lanes & ~found);
+        if (hit != 0) {
+            found |= hit;
+            last.slot = tri;
+        }
+    }
+    return found;
+}
+
 RAYLAB_AVX512 unsigned anyHit16Avx512(const Bvh& bvh, const Packet16& p, LastOccluder* last) {
+    const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.rays.tMax);
     unsigned found = 0; // lanes with a hit
     if (last != nullptr && last->block < bvh.triangleBlocks.size()) {
-        found = hitLanes16(bvh.triangleBlocks[last->block], last->slot & (kWideLanes - 1), p.rays,
-                           p.lanes);
+        found = lastOccluderLanes(bvh, p, tMaxMax, *last);
         if (found == p.lanes) {
             return found;
         }
     }
-    const float tMaxMax = _mm512_mask_reduce_max_ps(static_cast<__mmask16>(p.lanes), p.rays.tMax);
     alignas(64) float laneTMax[kPacket16Size];
     _mm512_store_ps(laneTMax, p.rays.tMax);
     PacketEntry16 stack[kWideStackSize + 1]; // + 1: a node's children are written above the top

@@ -110,14 +110,15 @@ RAYLAB_AVX512 inline TriangleBounds triangleBounds(const BvhTriangleBlock& block
     return b;
 }
 
-// The triangles of a block (their triangleBounds) that some lane may hit before `limitMax`: those
-// whose widened box passes frustumBoxes (a ray the watertight test finds on a triangle enters that
-// box, as it enters every node box holding the triangle); all 8 without a valid frustum.
-RAYLAB_AVX512 inline unsigned frustumTriangles(const TriangleBounds& b, const Frustum& f,
-                                               float limitMax) {
+// The triangles of a block that some lane may hit before `limitMax`: those whose box, widened by
+// `pad` (triangleBounds), passes frustumBoxes (a ray the watertight test finds on a triangle enters
+// that box, as it enters every node box holding the triangle); all 8 without a valid frustum.
+RAYLAB_AVX512 inline unsigned frustumTriangles(const BvhTriangleBlock& block, float pad,
+                                               const Frustum& f, float limitMax) {
     if (!f.valid) {
         return 0xffu;
     }
+    const TriangleBounds b = triangleBounds(block, pad);
     __m256 tNear;
     return frustumBoxes(&b.bounds[0][0][0], f, limitMax, tNear);
 }
@@ -258,9 +259,7 @@ RAYLAB_AVX512 inline void testLeaf(const Bvh& bvh, uint32_t ref, const Packet16&
         const int lanes = __builtin_popcount(active);
         const unsigned candidates =
             distinctTriangles(*block) &
-            (lanes == 1
-                 ? 0xffu
-                 : frustumTriangles(triangleBounds(*block, bvh.boxPad), p.frustum, limitMax));
+            (lanes == 1 ? 0xffu : frustumTriangles(*block, bvh.boxPad, p.frustum, limitMax));
         if (lanes < __builtin_popcount(candidates)) {
             for (unsigned m = active; m != 0; m &= m - 1) {
                 const int l = __builtin_ctz(m);
