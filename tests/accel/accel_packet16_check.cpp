@@ -20,6 +20,29 @@ std::vector<Packet16Path> packet16Paths() {
     return {Packet16Path::TwoPackets8};
 }
 
+bool rememberedTriangleHit(const Bvh& bvh, const LastOccluder& last, const Ray* rays,
+                           unsigned lanes) {
+    if (last.block >= bvh.triangleBlocks.size() || last.slot < 0 || last.slot >= kWideLanes) {
+        return false;
+    }
+    const BvhTriangleBlock& block = bvh.triangleBlocks[last.block];
+    glm::vec3 v[3];
+    for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) {
+            v[k][a] = block.vertex[k][a][last.slot];
+        }
+    }
+    for (unsigned m = lanes; m != 0; m &= m - 1) {
+        const Ray& ray = rays[__builtin_ctz(m)];
+        float t, u, w;
+        if (intersectTriangle(WatertightRay(ray), v[0], v[1], v[2], t, u, w) && t >= ray.tMin &&
+            t <= ray.tMax) {
+            return true;
+        }
+    }
+    return false;
+}
+
 int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Packet16Path path,
                    const Scene* scene, int& failures, LastOccluder* last) {
     RayPacket packets[2];
@@ -41,31 +64,12 @@ int expectPacket16(const Bvh& bvh, const Ray* rays, int count, unsigned mask, Pa
                           << withLast << " with block " << before.block << " slot " << before.slot;
         }
         // A triangle newly remembered (by the traversal or from the remembered one's block) is one
-        // that an occluded lane's ray hits within its range.
-        if (last->block != before.block || last->slot != before.slot) {
-            bool hitByAnOccludedRay = false;
-            if (last->block < bvh.triangleBlocks.size() && last->slot >= 0 &&
-                last->slot < kWideLanes) {
-                const BvhTriangleBlock& block = bvh.triangleBlocks[last->block];
-                const int s = last->slot;
-                const glm::vec3 v[3] = {
-                    {block.vertex[0][0][s], block.vertex[0][1][s], block.vertex[0][2][s]},
-                    {block.vertex[1][0][s], block.vertex[1][1][s], block.vertex[1][2][s]},
-                    {block.vertex[2][0][s], block.vertex[2][1][s], block.vertex[2][2][s]}};
-                for (unsigned m = withLast; m != 0; m &= m - 1) {
-                    const Ray& ray = rays[__builtin_ctz(m)];
-                    float t, u, v2;
-                    hitByAnOccludedRay =
-                        hitByAnOccludedRay ||
-                        (intersectTriangle(WatertightRay(ray), v[0], v[1], v[2], t, u, v2) &&
-                         t >= ray.tMin && t <= ray.tMax);
-                }
-            }
-            if (!hitByAnOccludedRay) {
-                ++failures;
-                ADD_FAILURE() << "block " << last->block << " slot " << last->slot
-                              << " remembered, which no occluded lane of " << withLast << " hits";
-            }
+        // that an occluded lane's ray hits.
+        if ((last->block != before.block || last->slot != before.slot) &&
+            !rememberedTriangleHit(bvh, *last, rays, withLast)) {
+            ++failures;
+            ADD_FAILURE() << "block " << last->block << " slot " << last->slot
+                          << " remembered, which no occluded lane of " << withLast << " hits";
         }
     }
     int hitCount = 0;

@@ -20,6 +20,11 @@ std::string packet16PathName(const ::testing::TestParamInfo<Packet16Path>& path)
 // The paths this CPU can run: the two 8-ray packets always, the AVX-512 packet where it has it.
 std::vector<Packet16Path> packet16Paths();
 
+// True when the triangle `last` names (one of bvh's blocks and slots) is hit within its range by
+// the ray of some lane of `lanes` (lane i's ray is rays[i]).
+bool rememberedTriangleHit(const Bvh& bvh, const LastOccluder& last, const Ray* rays,
+                           unsigned lanes);
+
 // Traces rays[0, count) (count <= 16) on `path` as one packet of 16 (lanes 0-7 low, 8-15 high)
 // with only the lanes of `mask` set, and expects each of those lanes to equal the single ray's
 // closestHit, closestHitScalar, anyHit and anyHitScalar (and brute force when `scene` is given),

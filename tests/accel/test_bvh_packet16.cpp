@@ -10,7 +10,6 @@
 #include "core/bvh/bvh_packet.h"
 #include "core/bvh/traverse/bvh_packet16_traverse.h"
 #include "core/cornell_box.h"
-#include "core/triangle_intersection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -127,15 +126,8 @@ TEST_P(BvhPacket16, LastOccluderChangesNoAnswer) {
         ASSERT_LT(last.block, bvh.triangleBlocks.size());
         const uint32_t triangle = bvh.triangleBlocks[last.block].sceneIndex[last.slot];
         ASSERT_LT(triangle, box.triangles.size());
-        const Triangle& tri = box.triangles[triangle];
-        bool hitByAnOccludedRay = false;
-        for (unsigned m = occluded; m != 0; m &= m - 1) {
-            float t, u, v;
-            hitByAnOccludedRay = hitByAnOccludedRay ||
-                                 intersectTriangle(WatertightRay(shadows[first + __builtin_ctz(m)]),
-                                                   tri.v0, tri.v1, tri.v2, t, u, v);
-        }
-        EXPECT_TRUE(hitByAnOccludedRay) << "packet at ray " << first;
+        EXPECT_TRUE(rememberedTriangleHit(bvh, last, &shadows[first], occluded))
+            << "packet at ray " << first;
         ++remembered;
         // The same rays stopped just before their first hit: none is occluded, whatever is
         // remembered.
