@@ -96,8 +96,8 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
                                                 (shadowCandidates ? kShadowCandidates : 0));
 }
 
-void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::size_t block,
-                             BlockAnswers& answers, LastOccluder& last) {
+void traceBlockInPacketPairs(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& blocked,
+                             std::size_t block, BlockAnswers& answers, LastOccluder& last) {
     const int count = blocked.rows[block];
     const std::size_t first = block * kPacketSize;
     const RayPacket* rays = &blocked.primary[first];
@@ -105,9 +105,20 @@ void traceBlockInPacketPairs(const Bvh& bvh, const BlockedRays& blocked, std::si
     HitPacket* hits = &answers.hits[first];
     unsigned* occluded = &answers.occluded[first];
     const bool shadows = blocked.blockShadowRays[block] != 0; // else occluded stays 0
-    // As shadeRowPairs: the camera rays (a block of 8 rows as 64 rays), then every pair's shadow
-    // rays.
+    // As shadeBlock and shadeRowPairs: a full block that sees only the background is answered
+    // from its rectangle; else the camera rays (a block of 8 rows as 64 rays), then every pair's
+    // shadow rays.
     const int paired = count / 2 * 2;
+    bool full = count == kPacketSize;
+    for (int k = 0; k < count && full; ++k) {
+        full = rays[k].lanes == 0xffu;
+    }
+    if (full && imageRectMissesScene(bvh, camera, blocked.rect[block])) {
+        for (int k = 0; k < count; ++k) {
+            hits[k].clear();
+        }
+        return; // no hit, so no shadow ray
+    }
     if (count == kPacketSize) {
         closestHit64(bvh, rays, hits);
     } else {

@@ -290,18 +290,18 @@ int run(int argc, char** argv) {
     const bool packets16 = blocks;
     report.packets16 = packets16;
     const BlockedRays tiled = packets16 ? blockRays(rays, BlockLayout::Tiles4x4) : BlockedRays{};
+    const PrimaryRays camera(cl.settings.camera, cl.settings.width, cl.settings.height);
     BlockAnswers pairAnswers = makeBlockAnswers(tiled);
     const TileTracer pairTile = [&](std::size_t tile) {
         LastOccluder last; // as the renderer's tile loop (lab_pass.cpp)
         for (std::size_t b = tiled.blockOffset[tile]; b < tiled.blockOffset[tile + 1]; ++b) {
-            traceBlockInPacketPairs(bvh, tiled, b, pairAnswers, last);
+            traceBlockInPacketPairs(bvh, camera, tiled, b, pairAnswers, last);
         }
         traceBounces(tile);
     };
     BlockAnswers blockAnswers = makeBlockAnswers(blocked);
     const glm::vec3 light = cl.settings.light.position;
     const bool shadowFrustum = cl.settings.shadowEpsilon >= 0.0f; // as shadeLabBlock
-    const PrimaryRays camera(cl.settings.camera, cl.settings.width, cl.settings.height);
     const TileTracer blockTile = [&](std::size_t tile) {
         for (std::size_t b = blocked.blockOffset[tile]; b < blocked.blockOffset[tile + 1]; ++b) {
             traceBlock(bvh, camera, blocked, b, light, shadowFrustum, blockAnswers);

@@ -305,6 +305,68 @@ TEST(BvhFrustum, RandomCamerasOnSoupsHeightFieldAndSphere) {
     }
 }
 
+// imageRectMissesScene: a block's rectangle reported to miss holds no ray that hits (brute force
+// at its corners, edges and random points), over random cameras and fields of view; and it does
+// report the blocks that see only the background, so that the renderer and the bench skip them.
+TEST(BvhFrustum, ImageRectMissesSceneOnlyWhereEveryRayMisses) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    const Scene scenes[] = {makeTriangleSoup(300, 0.6f, 3), makeHeightField(12, 5),
+                            makeClosedSphere(8, 12, 0.8f, 0.05f, 6)};
+    std::mt19937 random(21);
+    std::uniform_real_distribution<float> position(-4.0f, 4.0f);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float fovs[] = {50.0f, 100.0f, 0.5f, 170.0f, 20.0f};
+    constexpr int kWidth = 96, kHeight = 64;
+    int missing = 0, notMissing = 0, raysChecked = 0;
+    for (const Scene& scene : scenes) {
+        const Bvh bvh = buildBvh(scene);
+        for (const float fov : fovs) {
+            Camera camera;
+            camera.position = {position(random), position(random), position(random)};
+            lookAt(camera, {0.3f * position(random), 0.3f * position(random), 0.0f});
+            camera.verticalFovDegrees = fov;
+            const PrimaryRays primary(camera, kWidth, kHeight);
+            for (int y0 = 0; y0 < kHeight; y0 += kPacketSize) {
+                for (int x0 = 0; x0 < kWidth; x0 += kPacketSize) {
+                    // The renderer's rectangles: pixel centres (sample 0) and whole pixels.
+                    for (const float inset : {0.5f, 0.0f}) {
+                        const float x1 = static_cast<float>(x0 + kPacketSize) - inset;
+                        const float y1 = static_cast<float>(y0 + kPacketSize) - inset;
+                        const ImageRect rect{static_cast<float>(x0) + inset,
+                                             static_cast<float>(y0) + inset, x1, y1};
+                        if (!imageRectMissesScene(bvh, primary, rect)) {
+                            ++notMissing;
+                            continue;
+                        }
+                        ++missing;
+                        for (int k = 0; k < 40; ++k) {
+                            // Corners first, then points on the edges and inside.
+                            float u = unit(random), v = unit(random);
+                            if (k < 4) {
+                                u = static_cast<float>(k & 1);
+                                v = static_cast<float>(k >> 1);
+                            } else if (k < 12) {
+                                (k & 1 ? u : v) = static_cast<float>((k >> 1) & 1);
+                            }
+                            const float px = rect.x0 + u * (rect.x1 - rect.x0);
+                            const float py = rect.y0 + v * (rect.y1 - rect.y0);
+                            ASSERT_FALSE(
+                                closestHitBruteForce(scene, primary.through(px, py)).found())
+                                << "a ray through (" << px << ", " << py << ") hits, fov " << fov;
+                            ++raysChecked;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(missing, 200);
+    EXPECT_GT(notMissing, 200);
+    EXPECT_GT(raysChecked, 8000);
+}
+
 TEST(BvhFrustum, FarFromTheOriginStaysExact) {
     if (!bvhSimdSupported()) {
         GTEST_SKIP() << "no AVX2";

@@ -68,6 +68,12 @@ struct ImageRect {
 bool frustumOfImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
                         RayFrustum& frustum);
 
+// True when no ray camera.through(px, py) (or through8) with (px, py) in `rect` can enter a child
+// of the BVH's root, the rectangle's pyramid (frustumOfImageRect) lying outside all of them: then
+// each of those rays misses every triangle, and a block of pixels that sees only the background
+// is answered without its rays. False wherever frustumOfImageRect is.
+bool imageRectMissesScene(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect);
+
 // A pyramid with its apex at `end` holding the segment from each ray's origin to `end`, for rays
 // that run from their origin towards `end` and stop before it (tMax at most the distance to
 // `end`: shadow rays towards a point light). False as for frustumOfRays.

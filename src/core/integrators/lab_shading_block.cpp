@@ -3,8 +3,9 @@
 // many triangles are traced one by one through the BVH; packet by packet, a block is traced as
 // packets of 16 rays where the CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles,
 // else its rows two by two, and the camera rays of a block of 8 rows as one packet of 64
-// (closestHit64, the four 16-ray packets in one walk); without AVX-512, row by row. Either way each
-// lane's radiance is shadeLab8's.
+// (closestHit64, the four 16-ray packets in one walk), or none when the block's image rectangle
+// misses the scene (imageRectMissesScene); without AVX-512, row by row. Either way each lane's
+// radiance is shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -34,16 +35,21 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
 // each pair's shadow rays straight after its camera rays traced Sponza's 16-ray packets 0.90-0.91x
 // as fast, where without Embree in the process, and in the renderer's passes, the two orders run as
 // fast (why is not known). The shadow rays test `last` first and leave their last occluder in it
-// (LastOccluder). 1 <= pairs <= kPacketSize / 2. Call only where bvhPacket16Supported() and
+// (LastOccluder). `background`: every camera ray is known to miss (imageRectMissesScene), so none
+// is traced. 1 <= pairs <= kPacketSize / 2. Call only where bvhPacket16Supported() and
 // bvh.wideNodes is not empty.
 void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int pairs, RadiancePacket* radiance, RayCounts& counts,
-                   LastOccluder& last) {
+                   LastOccluder& last, bool background = false) {
     auto hits = unsetPackets<HitPacket>(std::make_index_sequence<kPacketSize>());
     ShadingBeforeShadow stages[kPacketSize];
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     const int count = 2 * pairs;
-    if (count == kPacketSize) {
+    if (background) {
+        for (int k = 0; k < count; ++k) {
+            hits[k].clear();
+        }
+    } else if (count == kPacketSize) {
         closestHit64(bvh, rays, hits.data());
     } else {
         for (int k = 0; k < count; k += 2) {
@@ -89,16 +95,17 @@ RAYLAB_AVX2 void gatherTile(const RayPacket* rows, int p, RayPacket& tile) {
 
 // shadeRowPairs of a full block's rows (8 packets of 8 lanes) regrouped as four 4 x 4 tiles
 // (tilePixel): a square of pixels is a narrower frustum than two rows, so fewer nodes pass its
-// tests. radiance[r] is row r's, as for the rows.
+// tests. radiance[r] is row r's, as for the rows; `background` as shadeRowPairs takes it.
 void shadeTiles(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const RayPacket* rows, RadiancePacket* radiance, RayCounts& counts,
-                LastOccluder& last) {
+                LastOccluder& last, bool background) {
     auto tiles = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     for (int p = 0; p < kPacketSize; ++p) {
         gatherTile(rows, p, tiles[p]);
     }
     RadiancePacket tileRadiance[kPacketSize];
-    shadeRowPairs(scene, bvh, settings, tiles.data(), kPacketSize / 2, tileRadiance, counts, last);
+    shadeRowPairs(scene, bvh, settings, tiles.data(), kPacketSize / 2, tileRadiance, counts, last,
+                  background);
     for (int p = 0; p < kPacketSize; ++p) {
         for (int half = 0; half < 2; ++half) {
             const BlockPixel corner = tilePixel(p, half * 4);
@@ -139,7 +146,10 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
             LastOccluder blockOnly;
             LastOccluder& last = lastOccluder != nullptr ? *lastOccluder : blockOnly;
             if (fullBlock(rays, count)) {
-                shadeTiles(scene, bvh, settings, rays, radiance, counts, last);
+                // A block that sees only the background is answered from its rectangle.
+                const bool background =
+                    camera != nullptr && imageRectMissesScene(bvh, *camera, rect);
+                shadeTiles(scene, bvh, settings, rays, radiance, counts, last, background);
                 return;
             }
             if (count >= 2) {

@@ -286,6 +286,19 @@ RAYLAB_AVX2 bool collectAvx2(const Bvh& bvh, const RayFrustum& frustum, FrustumC
     return true;
 }
 
+// Whether no child of the root lies (partly) inside the frustum.
+RAYLAB_AVX2 bool missesRoot(const Bvh& bvh, const RayFrustum& frustum) {
+    PlaneRegisters r;
+    loadPlanes(frustum, r);
+    const BvhWideNode& root = bvh.wideNodes[0];
+    for (unsigned m = childrenInside(root, r); m != 0; m &= m - 1) {
+        if (root.child[__builtin_ctz(m)] != kWideEmpty) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 bool frustumOfRays(const Bvh& bvh, const RayPacket* packets, int count, RayFrustum& frustum) {
@@ -313,6 +326,11 @@ bool frustumOfSegments(const Bvh& bvh, const RayPacket* packets, int count, cons
         return false;
     }
     return pyramidOf(bvh, packets, count, end, true, frustum);
+}
+
+bool imageRectMissesScene(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect) {
+    RayFrustum frustum;
+    return frustumOfImageRect(bvh, camera, rect, frustum) && missesRoot(bvh, frustum);
 }
 
 bool frustumCandidates(const Bvh& bvh, const RayFrustum& frustum, FrustumCandidates& candidates) {
@@ -372,6 +390,7 @@ RAYLAB_AVX2 unsigned anyHitCandidates(const Bvh& bvh, const FrustumCandidates& c
 
 namespace raylab {
 bool frustumOfRays(const Bvh&, const RayPacket*, int, RayFrustum&) { return false; }
+bool imageRectMissesScene(const Bvh&, const PrimaryRays&, const ImageRect&) { return false; }
 bool frustumOfSegments(const Bvh&, const RayPacket*, int, const glm::vec3&, RayFrustum&) {
     return false;
 }
