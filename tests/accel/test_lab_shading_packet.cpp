@@ -1,6 +1,7 @@
 // shadeLab8 (packets of camera and shadow rays) against shadeLab, pixel for pixel.
 
 #include "accel_scenes.h"
+#include "core/bvh/bvh_frustum.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/lab_shading.h"
@@ -158,6 +159,54 @@ TEST(LabShadingPacket, BlocksEqualPackets) {
         settings.light.position = {0.5f, 2.0f, -1.5f};
         expectBlockShadingEqualsPackets(makeTriangleSoup(5000, 0.1f, 31), settings, tracing);
     }
+}
+
+// A mesh's full blocks (packets of 16 and 64 rays) framed so that some see only the background,
+// which shadeLabBlock answers from their image rectangle (imageRectMissesScene) without tracing:
+// every row's radiance and the ray counts are shadeLab8's, and both kinds of block occur.
+TEST(LabShadingPacket, BlocksThatSeeOnlyTheBackgroundEqualPackets) {
+    const Scene scene = makeTriangleSoup(5000, 0.1f, 31);
+    const Bvh bvh = buildBvh(scene);
+    RenderSettings settings;
+    settings.width = 128;
+    settings.height = 96;
+    settings.light.position = {0.5f, 2.0f, -1.5f};
+    settings.camera.position = {0.4f, 0.3f, -7.0f}; // the soup fills the middle of the picture
+    const PrimaryRays primary(settings.camera, settings.width, settings.height);
+    int background = 0, other = 0;
+    for (int y0 = 0; y0 < settings.height; y0 += kPacketSize) {
+        for (int x0 = 0; x0 < settings.width; x0 += kPacketSize) {
+            for (const float inset : {0.5f, 0.0f}) { // sample 0 at pixel centres, later anywhere
+                RayPacket packets[kPacketSize];
+                for (int r = 0; r < kPacketSize; ++r) {
+                    for (int i = 0; i < kPacketSize; ++i) {
+                        const float dx = inset == 0.5f ? 0.5f : (i % 3 == 0 ? 0.0f : 0.99f);
+                        packets[r].set(i, primary.through(static_cast<float>(x0 + i) + dx,
+                                                          static_cast<float>(y0 + r) + dx));
+                    }
+                }
+                const ImageRect rect{static_cast<float>(x0) + inset, static_cast<float>(y0) + inset,
+                                     static_cast<float>(x0 + kPacketSize) - inset,
+                                     static_cast<float>(y0 + kPacketSize) - inset};
+                (imageRectMissesScene(bvh, primary, rect) ? background : other) += 1;
+                RadiancePacket block[kPacketSize], single[kPacketSize];
+                RayCounts blockCounts, singleCounts;
+                shadeLabBlock(scene, bvh, settings, primary, rect, packets, kPacketSize, block,
+                              blockCounts, BlockTracing::Packets);
+                for (int r = 0; r < kPacketSize; ++r) {
+                    shadeLab8(scene, bvh, settings, packets[r], single[r], singleCounts);
+                    ASSERT_EQ(std::memcmp(&block[r], &single[r], sizeof(RadiancePacket)), 0)
+                        << "block " << x0 << ", " << y0 << " row " << r;
+                }
+                ASSERT_EQ(blockCounts.primary, singleCounts.primary);
+                ASSERT_EQ(blockCounts.shadow, singleCounts.shadow);
+            }
+        }
+    }
+    if (bvhSimdSupported()) {
+        EXPECT_GT(background, 20);
+    }
+    EXPECT_GT(other, 20);
 }
 
 // The renderer's rule: frustums for scenes of up to 4,096 leaf triangles where the CPU has
