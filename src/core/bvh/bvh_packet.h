@@ -9,12 +9,30 @@
 
 namespace raylab {
 
+// The triangle that last occluded a lane of anyHit8's or anyHit16's packets on one BVH.
+// Neighbouring shadow rays towards one light are often blocked by the same triangle
+// (PERFORMANCE.md, "The last occluder first"), so each call tests it against its lanes before the
+// traversal, and then the other triangles of its block (its neighbours in the BVH) against the
+// lanes it leaves open; the traversal traces only the lanes still open. The answers are the same
+// as without it: a lane one of those triangles occludes is one the traversal finds occluded. A
+// caller keeps one for a run of coherent packets on one BVH (a block's, a tile's); a default-made
+// one tests nothing first.
+struct LastOccluder {
+    static constexpr uint32_t kNone = ~0u;
+    uint32_t block = kNone; // index into Bvh::triangleBlocks, or kNone
+    int slot = 0;           // the triangle's slot in that block, 0-7
+};
+
 // Closest hits of the lanes of rays.lanes; every other lane of hits gets Hit{}. Every lane is
 // written, whatever hits held.
 void closestHit8(const Bvh& bvh, const RayPacket& rays, HitPacket& hits);
 
 // The lanes of rays.lanes whose ray hits a triangle (bit i: lane i).
 unsigned anyHit8(const Bvh& bvh, const RayPacket& rays);
+
+// anyHit8 that tests last's triangle and block first and leaves in `last` a triangle that
+// occluded a lane.
+unsigned anyHit8(const Bvh& bvh, const RayPacket& rays, LastOccluder& last);
 
 // The same for Ray records: rays[0, count) into hits[0, count) or occluded[0, count),
 // 0 <= count <= kPacketSize.
@@ -37,20 +55,6 @@ void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits);
 
 // Bits 0-7: the lanes of low.lanes whose ray hits a triangle; bits 8-15: those of high.lanes.
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high);
-
-// The triangle that last occluded a lane of anyHit16's 16-ray packets on one BVH. Neighbouring
-// shadow rays towards one light are often blocked by the same triangle (PERFORMANCE.md, "The
-// last occluder first"), so each call tests it against its lanes before the traversal, and then
-// the other triangles of its block (its neighbours in the BVH) against the lanes it leaves open;
-// the traversal traces only the lanes still open. The answers are the same as without it: a lane
-// one of those triangles occludes is one the traversal finds occluded. A caller keeps one for a run
-// of coherent packets on one BVH (a block's, a tile's); a default-made one tests nothing first.
-// Used by the AVX-512 path only.
-struct LastOccluder {
-    static constexpr uint32_t kNone = ~0u;
-    uint32_t block = kNone; // index into Bvh::triangleBlocks, or kNone
-    int slot = 0;           // the triangle's slot in that block, 0-7
-};
 
 // anyHit16 that tests last's triangle and block first and leaves in `last` a triangle that
 // occluded a lane.

@@ -21,11 +21,12 @@ void closestHit8(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
     }
 }
 
-unsigned anyHit8(const Bvh& bvh, const RayPacket& rays) {
+namespace {
+unsigned anyHit8(const Bvh& bvh, const RayPacket& rays, LastOccluder* last) {
     unsigned occluded = 0;
     unsigned single = rays.lanes;
     if (!bvh.wideNodes.empty() && rays.lanes != 0) {
-        single = anyHitPacket(bvh, rays, occluded);
+        single = anyHitPacket(bvh, rays, occluded, last);
     }
     for (unsigned m = single; m != 0; m &= m - 1) {
         const int i = __builtin_ctz(m);
@@ -34,6 +35,13 @@ unsigned anyHit8(const Bvh& bvh, const RayPacket& rays) {
         }
     }
     return occluded;
+}
+} // namespace
+
+unsigned anyHit8(const Bvh& bvh, const RayPacket& rays) { return anyHit8(bvh, rays, nullptr); }
+
+unsigned anyHit8(const Bvh& bvh, const RayPacket& rays, LastOccluder& last) {
+    return anyHit8(bvh, rays, &last);
 }
 
 namespace {

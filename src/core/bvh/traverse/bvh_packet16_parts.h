@@ -1,29 +1,17 @@
 #pragma once
 // What the 16-ray and 64-ray packet traversals share (internal to bvh_packet16_avx512.cpp and
 // bvh_packet64_avx512.cpp, the only files that may include it: it runs only on CPUs with
-// AVX-512F): a packet of 16 rays set up (makePacket16), its frustum and the frustum's test of 8
-// boxes at once, one lane's own tests of a node's children and of a block's triangles, and the
-// test of a leaf's triangles against the packet's lanes (testLeaf).
+// AVX-512F): a packet of 16 rays set up (makePacket16) with its frustum (tested against 8 boxes at
+// once by bvh_packet_frustum.h), one lane's own tests of a node's children and of a block's
+// triangles, and the test of a leaf's triangles against the packet's lanes (testLeaf).
 
 #include "bvh/build/bvh_collapse.h"
 #include "bvh/traverse/bvh_block_ray.h"
 #include "bvh/traverse/bvh_packet16_lanes.h"
+#include "bvh/traverse/bvh_packet_frustum.h"
 #include "bvh/traverse/bvh_packet_traverse.h"
 
 namespace raylab::packet16_lanes {
-
-// Bounds of the 16 rays' box test, for all 8 children of a node at once: per axis, the interval
-// of the lanes' origins and of their inverse directions, so that for every lane
-// (bound - origin) * inverse lies within [min, max] of the products at the intervals' ends
-// (float subtraction and multiplication round monotonically). Valid when, per axis, every lane's
-// inverse has one sign: then the near bound is the same plane of the box for all of them.
-struct Frustum {
-    bool valid = false;
-    int nearOffset[3], farOffset[3];    // into BvhWideNode's floats, as in bvh_traverse_avx2.cpp
-    __m256 nearOrigin[3], farOrigin[3]; // the origins that make (bound - origin) smallest, largest
-    __m256 inverseMin[3], inverseMax[3];
-    __m256 tMin; // the lanes' smallest tMin
-};
 
 // Each lane's constants as floats, for tests of one lane's ray: the box test's, and the shear
 // and tMax of the triangle test (whose origin in permuted order is origin[k]).
@@ -69,75 +57,12 @@ RAYLAB_AVX512 inline void makeFrustum(Packet16& p) {
     f.tMin = _mm256_set1_ps(_mm512_mask_reduce_min_ps(lanes, p.rays.tMin));
 }
 
-// Of 8 boxes given as lower[3][8] then upper[3][8] floats (BvhWideNode's layout), those some
-// lane may enter before `limitMax` (the lanes' largest limit): a superset of the boxes any lane's
-// own slab test keeps (hitChild16), since each lane's near distance is at least the frustum's
-// and its far distance at most the frustum's. Also their frustum near distances.
-RAYLAB_AVX512 inline unsigned frustumBoxes(const float* bounds, const Frustum& f, float limitMax,
-                                           __m256& tNear) {
-    __m256 tn = f.tMin, tf = _mm256_set1_ps(limitMax);
-    for (int a = 0; a < 3; ++a) {
-        const __m256 xn = _mm256_sub_ps(_mm256_load_ps(bounds + f.nearOffset[a]), f.nearOrigin[a]);
-        const __m256 xf = _mm256_sub_ps(_mm256_load_ps(bounds + f.farOffset[a]), f.farOrigin[a]);
-        tn = _mm256_max_ps(tn, _mm256_min_ps(_mm256_mul_ps(xn, f.inverseMin[a]),
-                                             _mm256_mul_ps(xn, f.inverseMax[a])));
-        tf = _mm256_min_ps(tf, _mm256_max_ps(_mm256_mul_ps(xf, f.inverseMin[a]),
-                                             _mm256_mul_ps(xf, f.inverseMax[a])));
-    }
-    tNear = tn;
-    return static_cast<unsigned>(_mm256_movemask_ps(
-        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
-}
-
-// The bounding boxes of a block's 8 triangles, each widened by `pad` (Bvh::boxPad) as every node
-// box is, in BvhWideNode's layout (lower[3][8] then upper[3][8]) for frustumBoxes.
-struct alignas(32) TriangleBounds {
-    float bounds[2][3][kWideLanes];
-};
-
-RAYLAB_AVX512 inline TriangleBounds triangleBounds(const BvhTriangleBlock& block, float pad) {
-    TriangleBounds b;
-    for (int a = 0; a < 3; ++a) {
-        const __m256 v0 = _mm256_load_ps(block.vertex[0][a]);
-        const __m256 v1 = _mm256_load_ps(block.vertex[1][a]);
-        const __m256 v2 = _mm256_load_ps(block.vertex[2][a]);
-        const __m256 widen = _mm256_set1_ps(pad);
-        _mm256_store_ps(b.bounds[0][a],
-                        _mm256_sub_ps(_mm256_min_ps(_mm256_min_ps(v0, v1), v2), widen));
-        _mm256_store_ps(b.bounds[1][a],
-                        _mm256_add_ps(_mm256_max_ps(_mm256_max_ps(v0, v1), v2), widen));
-    }
-    return b;
-}
-
-// The triangles of a block that some lane may hit before `limitMax`: those whose box, widened by
-// `pad` (triangleBounds), passes frustumBoxes (a ray the watertight test finds on a triangle enters
-// that box, as it enters every node box holding the triangle); all 8 without a valid frustum.
-RAYLAB_AVX512 inline unsigned frustumTriangles(const BvhTriangleBlock& block, float pad,
-                                               const Frustum& f, float limitMax) {
-    if (!f.valid) {
-        return 0xffu;
-    }
-    const TriangleBounds b = triangleBounds(block, pad);
-    __m256 tNear;
-    return frustumBoxes(&b.bounds[0][0][0], f, limitMax, tNear);
-}
-
-// The children lane l's own ray enters before limit[l] (bvh_traverse_avx2.cpp's hitChildren for
-// that one ray, with plain min and max of the two planes so that it holds for either sign).
+// The children lane l's own ray enters before `limit` (packet_lanes::laneChildren).
 RAYLAB_AVX512 inline unsigned laneChildren(const BvhWideNode& node, const LaneScalars& s, int l,
                                            float limit) {
-    __m256 tn = _mm256_set1_ps(s.tMin[l]), tf = _mm256_set1_ps(limit);
-    for (int a = 0; a < 3; ++a) {
-        const __m256 o = _mm256_set1_ps(s.origin[a][l]);
-        const __m256 inv = _mm256_set1_ps(s.inverse[a][l]);
-        const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.lower[a]), o), inv);
-        const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.upper[a]), o), inv);
-        tn = _mm256_max_ps(tn, _mm256_min_ps(t0, t1));
-        tf = _mm256_min_ps(tf, _mm256_max_ps(t0, t1));
-    }
-    return static_cast<unsigned>(_mm256_movemask_ps(
-        _mm256_cmp_ps(tn, _mm256_mul_ps(tf, _mm256_set1_ps(kBoxRoundUp)), _CMP_LE_OQ)));
+    const float origin[3] = {s.origin[0][l], s.origin[1][l], s.origin[2][l]};
+    const float inverse[3] = {s.inverse[0][l], s.inverse[1][l], s.inverse[2][l]};
+    return packet_lanes::laneChildren(node, origin, inverse, s.tMin[l], limit);
 }
 
 // Sets up the 16 rays: each half's packet (makePacket: the valid lanes sharing its most common
@@ -232,14 +157,6 @@ RAYLAB_AVX512 inline void keepBlockLane(PacketBest16& best, const BvhTriangleBlo
 RAYLAB_AVX512 inline int blockSlotHitByLane(const BvhTriangleBlock& block, const Packet16& p,
                                             int l) {
     return blockHitSlot(block, intersectBlock(block, laneBlockRay(p, l)), rayOf(p.rays, l));
-}
-
-// Leaves slot `slot` of `block` (one of bvh's) in `last`, when given.
-inline void remember(const Bvh& bvh, const BvhTriangleBlock* block, int slot, LastOccluder* last) {
-    if (last != nullptr) {
-        last->block = static_cast<uint32_t>(block - bvh.triangleBlocks.data());
-        last->slot = slot;
-    }
 }
 
 // Tests the triangles of leaf `ref` against the lanes of `active`. Closest hit: keeps the lanes'

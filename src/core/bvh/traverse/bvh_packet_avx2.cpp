@@ -1,7 +1,19 @@
-// AVX2 packet traversal of the 8-wide BVH: the 8 lanes of a register are 8 rays. A node tests
-// each child's box against all rays and descends when any active ray hits it; a leaf tests each
-// triangle against all rays at once, or, where fewer rays reach a block than it has triangles,
-// each ray against the block's 8 triangles at once (the single-ray traversal's test).
+// AVX2 packet traversal of the 8-wide BVH: the 8 lanes of a register are 8 rays. For coherent
+// rays a node costs little more than it costs one ray, as for the 16-ray packets
+// (bvh_packet16_avx512.cpp):
+// - the packet's frustum (bvh_packet_frustum.h) tests all 8 children at once and leaves out every
+//   child no lane can enter; when it leaves out all 8, the visit ends there;
+// - the first active lane's own ray tests the 8 children; a candidate it enters is taken with
+//   every active lane (a superset of the lanes that enter it) and the frustum's entry distance;
+// - only the other candidates are tested lane by lane (hitChild);
+// - in a leaf, the frustum leaves out the triangles whose (padded) bounding box no lane can
+//   enter, and each other triangle is tested against the active lanes, or, where fewer rays
+//   reach a block than it has such triangles, each ray against the block's 8 triangles at once
+//   (the single-ray traversal's test).
+// Any hit with a LastOccluder (bvh_packet.h) first tests the triangle that occluded a lane of an
+// earlier packet against all lanes, then the other triangles of its block against the lanes left
+// open, traverses only for the lanes still open, and remembers a triangle that a lane hits.
+// Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
 // Exactness, lane by lane: the triangle test is intersectTriangle (triangle_intersection.cpp)
 // operation for operation (core builds with -ffp-contract=off), valid because all lanes share
@@ -9,13 +21,14 @@
 // with an edge function of exactly zero go to intersectTriangle itself. A lane keeps the minimum
 // of (t, triangle index) over the triangles it hits, and only drops boxes that start beyond its
 // own closest hit, as the single-ray traversal does, so the visiting order (the packet's) does
-// not change its answer.
+// not change its answer; every culling test above keeps a superset of the lanes' own slab tests.
 
 #include "bvh/traverse/bvh_packet_traverse.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 
 #include "bvh/build/bvh_collapse.h"
+#include "bvh/traverse/bvh_packet_frustum.h"
 #include "bvh/traverse/bvh_packet_lanes.h"
 
 namespace raylab {
@@ -25,26 +38,81 @@ namespace {
 using namespace packet_lanes;
 
 struct PacketEntry {
-    __m256 tNear; // per lane
+    __m256 tNear; // per lane, at most the lane's entry distance
     uint32_t ref;
-    unsigned lanes; // lanes whose ray entered the box
+    unsigned lanes; // a superset of the lanes whose ray enters the box
 };
 
-// The children of a node that some lane of `active` hits, each prefetched (prefetchChild), sorted
-// nearest last by the entry distance of their first hitting lane when `ordered` (closest hit), else
-// in slot order (any hit: the sort costs more than it saves there; callgrind on the shadow packets:
-// box -3.6%, Sponza -3.6%, dragon -8.7% instructions without it). Returns how many.
+// The packet's frustum, its lanes' box-test constants as floats for one lane's own test of a
+// node's children (laneChildren), each lane's limit (min(tMax, its closest hit so far)) and the
+// largest of them. Set only where the frustum is valid.
+struct PacketCulling {
+    Frustum frustum;
+    alignas(32) float origin[3][kPacketSize];
+    alignas(32) float inverse[3][kPacketSize];
+    alignas(32) float tMin[kPacketSize];
+    alignas(32) float limit[kPacketSize];
+    float limitMax = 0.0f;
+};
+
+RAYLAB_AVX2 inline void setLimits(const PacketRays& p, __m256 limit, PacketCulling& c) {
+    if (c.frustum.valid) {
+        _mm256_store_ps(c.limit, limit);
+        c.limitMax = laneMax(limit, p.lanes);
+    }
+}
+
+RAYLAB_AVX2 inline void makeCulling(const PacketRays& p, PacketCulling& c) {
+    makeFrustum8(p, c.frustum);
+    if (!c.frustum.valid) {
+        return;
+    }
+    for (int a = 0; a < 3; ++a) {
+        _mm256_store_ps(c.origin[a], p.origin[a]);
+        _mm256_store_ps(c.inverse[a], p.inverse[a]);
+    }
+    _mm256_store_ps(c.tMin, p.tMin);
+    setLimits(p, p.tMax, c);
+}
+
+// The children of a node that some lane of `active` may enter (the header comment says how),
+// each prefetched (prefetchChild), sorted nearest last by the entry distance of their first lane
+// when `ordered` (closest hit), else in slot order (any hit: the sort costs more than it saves
+// there; callgrind on the shadow packets: box -3.6%, Sponza -3.6%, dragon -8.7% instructions
+// without it). Returns how many.
 template <bool ordered>
 RAYLAB_AVX2 inline int hitChildren(const Bvh& bvh, const BvhWideNode& node, const PacketRays& p,
-                                   __m256 limit, unsigned active, PacketEntry* out) {
+                                   const PacketCulling& cull, __m256 limit, unsigned active,
+                                   PacketEntry* out) {
     int n = 0;
     float key[kWideLanes];
-    for (int c = 0; c < kWideLanes; ++c) {
+    unsigned candidates = 0xffu, firstLane = 0;
+    alignas(32) float frustumNear[kWideLanes];
+    if (cull.frustum.valid) {
+        __m256 tNear;
+        candidates = frustumBoxes(&node.lower[0][0], cull.frustum, cull.limitMax, tNear);
+        if (candidates == 0) {
+            return 0; // no lane enters a child
+        }
+        _mm256_store_ps(frustumNear, tNear);
+        const int l = __builtin_ctz(active);
+        const float origin[3] = {cull.origin[0][l], cull.origin[1][l], cull.origin[2][l]};
+        const float inverse[3] = {cull.inverse[0][l], cull.inverse[1][l], cull.inverse[2][l]};
+        firstLane = candidates & laneChildren(node, origin, inverse, cull.tMin[l], cull.limit[l]);
+    }
+    for (unsigned m = candidates; m != 0; m &= m - 1) {
+        const int c = __builtin_ctz(m);
         if (node.child[c] == kWideEmpty) {
             continue;
         }
         __m256 tNear;
-        const unsigned lanes = hitChild(node, c, p, limit, tNear) & active;
+        unsigned lanes;
+        if ((firstLane >> c) & 1u) {
+            tNear = _mm256_set1_ps(frustumNear[c]);
+            lanes = active;
+        } else {
+            lanes = hitChild(node, c, p, limit, tNear) & active;
+        }
         if (lanes == 0) {
             continue;
         }
@@ -128,24 +196,34 @@ RAYLAB_AVX2 inline void keepBlockLane(PacketBest& best, const BvhTriangleBlock& 
 
 // The leaf's blocks against the lanes of `active`. Closest hit (best set): keeps the lanes'
 // closest hits in best. Any hit: adds the lanes that hit to `found`, drops them from `active`,
-// and stops when none is left. Per block, whichever takes fewer tests of 8 lanes: each of its
-// triangles against the lanes, or each active lane's ray against the whole block (the
-// single-ray traversal's leaf test), when fewer lanes are active than it has triangles.
+// leaves a triangle that one hit in `last` (when given), and stops when none is left. Per block,
+// whichever takes fewer tests of 8 lanes:
+// - each triangle some lane may hit before the lanes' largest limit (frustumTriangles) against
+//   the lanes;
+// - or, when fewer lanes are active than that, each active lane's ray against the whole block
+//   (the single-ray traversal's leaf test). A lone lane takes it without the frustum test, which
+//   costs about as much as the block's.
 RAYLAB_AVX2 inline void testLeaf(const Bvh& bvh, uint32_t ref, const PacketRays& p,
-                                 const RayPacket& rays, PacketBest* best, unsigned& active,
-                                 unsigned& found) {
+                                 const PacketCulling& cull, const RayPacket& rays, PacketBest* best,
+                                 unsigned& active, unsigned& found, LastOccluder* last) {
     const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
     for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
-        const unsigned triangles = distinctTriangles(*block);
-        if (__builtin_popcount(active) < __builtin_popcount(triangles)) {
+        const int lanes = __builtin_popcount(active);
+        const unsigned triangles =
+            distinctTriangles(*block) &
+            (lanes == 1 ? 0xffu
+                        : frustumTriangles(*block, bvh.boxPad, cull.frustum, cull.limitMax));
+        if (lanes < __builtin_popcount(triangles)) {
             for (unsigned m = active; m != 0; m &= m - 1) {
                 const int l = __builtin_ctz(m);
                 if (best != nullptr) {
                     keepBlockLane(*best, *block, p, rays, l);
-                } else if (blockHit(*block, intersectBlock(*block, laneBlockRay(p, l)),
-                                    rays.ray(l))) {
+                } else if (const int slot = blockHitSlot(
+                               *block, intersectBlock(*block, laneBlockRay(p, l)), rays.ray(l));
+                           slot >= 0) {
                     found |= 1u << l;
                     active &= ~(1u << l);
+                    remember(bvh, block, slot, last);
                 }
             }
             continue;
@@ -156,11 +234,41 @@ RAYLAB_AVX2 inline void testLeaf(const Bvh& bvh, uint32_t ref, const PacketRays&
                 keepTriangle(*best, *block, tri, p, rays, active);
             } else {
                 const unsigned hit = hitLanes(*block, tri, p, rays, active);
-                found |= hit;
-                active &= ~hit;
+                if (hit != 0) {
+                    found |= hit;
+                    active &= ~hit;
+                    remember(bvh, block, tri, last);
+                }
             }
         }
     }
+}
+
+// The lanes of p that the triangles of last's block (one of bvh's) occlude: last's triangle
+// against all lanes, then, while some are open, each other triangle of its block that an open lane
+// may hit (frustumTriangles) against the open lanes. Neighbouring shadow rays that last's triangle
+// leaves open are often blocked by a triangle next to it. last's slot moves to a triangle that
+// occludes a lane.
+RAYLAB_AVX2 inline unsigned lastOccluderLanes(const Bvh& bvh, const PacketRays& p,
+                                              const PacketCulling& cull, const RayPacket& rays,
+                                              LastOccluder& last) {
+    const BvhTriangleBlock& block = bvh.triangleBlocks[last.block];
+    const int slot = last.slot & (kWideLanes - 1);
+    unsigned found = hitLanes(block, slot, p, rays, p.lanes);
+    if (found == p.lanes) {
+        return found;
+    }
+    const unsigned others = distinctTriangles(block) & ~(1u << slot) &
+                            frustumTriangles(block, bvh.boxPad, cull.frustum, cull.limitMax);
+    for (unsigned m = others; m != 0 && found != p.lanes; m &= m - 1) {
+        const int tri = __builtin_ctz(m);
+        const unsigned hit = hitLanes(block, tri, p, rays, p.lanes & ~found);
+        if (hit != 0) {
+            found |= hit;
+            last.slot = tri;
+        }
+    }
+    return found;
 }
 
 } // namespace
@@ -173,6 +281,8 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, Hit
         hits.clear();
         return p.others;
     }
+    PacketCulling cull;
+    makeCulling(p, cull);
     PacketBest best = noHitYet();
     __m256 limit = p.tMax; // per lane: min(tMax, best.t)
     const __m256 roundUp = _mm256_set1_ps(kBoxRoundUp);
@@ -183,15 +293,17 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, Hit
     for (;;) {
         if (!isLeaf(ref)) {
             PacketEntry children[kWideLanes];
-            const int n = hitChildren<true>(bvh, bvh.wideNodes[ref], p, limit, active, children);
+            const int n =
+                hitChildren<true>(bvh, bvh.wideNodes[ref], p, cull, limit, active, children);
             if (n > 0) {
                 descend(children, n, stack, size, ref, active);
                 continue;
             }
         } else {
             unsigned found = 0;
-            testLeaf(bvh, ref, p, rays, &best, active, found);
+            testLeaf(bvh, ref, p, cull, rays, &best, active, found, nullptr);
             limit = _mm256_min_ps(p.tMax, best.t);
+            setLimits(p, limit, cull);
         }
         // Next: the nearest pending entry that some lane may still find a closer hit in.
         for (;;) {
@@ -212,7 +324,8 @@ RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, Hit
     }
 }
 
-RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded) {
+RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded,
+                                  LastOccluder* last) {
     PacketRays p;
     makePacket(rays, p);
     occluded = 0;
@@ -220,21 +333,31 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigne
     if (lanes == 0) {
         return p.others;
     }
+    PacketCulling cull;
+    makeCulling(p, cull);
     unsigned found = 0; // lanes with a hit
+    if (last != nullptr && last->block < bvh.triangleBlocks.size()) {
+        found = lastOccluderLanes(bvh, p, cull, rays, *last);
+        if (found == lanes) {
+            occluded = found;
+            return p.others;
+        }
+    }
     PacketEntry stack[kWideStackSize];
     int size = 0;
     uint32_t ref = 0;
-    unsigned active = lanes;
+    unsigned active = lanes & ~found;
     for (;;) {
         if (!isLeaf(ref)) {
             PacketEntry children[kWideLanes];
-            const int n = hitChildren<false>(bvh, bvh.wideNodes[ref], p, p.tMax, active, children);
+            const int n =
+                hitChildren<false>(bvh, bvh.wideNodes[ref], p, cull, p.tMax, active, children);
             if (n > 0) {
                 descend(children, n, stack, size, ref, active);
                 continue;
             }
         } else {
-            testLeaf(bvh, ref, p, rays, nullptr, active, found);
+            testLeaf(bvh, ref, p, cull, rays, nullptr, active, found, last);
             if (found == lanes) {
                 break;
             }
@@ -266,7 +389,7 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigne
 
 namespace raylab {
 unsigned closestHitPacket(const Bvh&, const RayPacket&, HitPacket&) { return 0; }
-unsigned anyHitPacket(const Bvh&, const RayPacket&, unsigned&) { return 0; }
+unsigned anyHitPacket(const Bvh&, const RayPacket&, unsigned&, LastOccluder*) { return 0; }
 } // namespace raylab
 
 #endif

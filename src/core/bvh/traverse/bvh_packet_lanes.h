@@ -5,6 +5,7 @@
 // index), so that the order in which triangles are tested never changes an answer.
 
 #include "bvh/bvh.h"
+#include "bvh/bvh_packet.h"
 #include "bvh/traverse/bvh_block_ray.h"
 #include "bvh/traverse/bvh_box_ray.h"
 #include "bvh/traverse/bvh_packet_setup.h"
@@ -42,6 +43,14 @@ RAYLAB_AVX2 inline unsigned distinctTriangles(const BvhTriangleBlock& block) {
     const auto repeats = static_cast<unsigned>(
         _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(index, first))));
     return (~repeats & 0xffu) | 1u;
+}
+
+// Leaves slot `slot` of `block` (one of bvh's) in `last`, when given.
+inline void remember(const Bvh& bvh, const BvhTriangleBlock* block, int slot, LastOccluder* last) {
+    if (last != nullptr) {
+        last->block = static_cast<uint32_t>(block - bvh.triangleBlocks.data());
+        last->slot = slot;
+    }
 }
 
 // The closest hit per lane so far: (t, triangle) decides; u and v are held as e1 and e2 until

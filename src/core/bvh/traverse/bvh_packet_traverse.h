@@ -3,6 +3,7 @@
 // bvh.wideNodes is not empty.
 
 #include "bvh/bvh.h"
+#include "bvh/bvh_packet.h"
 #include "ray_packet.h"
 
 namespace raylab {
@@ -11,8 +12,10 @@ namespace raylab {
 // permutation of the watertight test (WatertightRay::kx, ky, kz). Every lane of hits is written:
 // Hit{} unless the lane was traced and found a triangle; `occluded` gets the traced lanes that
 // hit something. Returns the lanes it did not answer (valid rays with another permutation), for
-// the single-ray path.
+// the single-ray path. With `last`, the any-hit test tests last's triangle and block first and
+// leaves in it a triangle that occluded a lane (LastOccluder).
 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits);
-unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded);
+unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded,
+                      LastOccluder* last = nullptr);
 
 } // namespace raylab
