@@ -109,11 +109,7 @@ void traceBlockInPacketPairs(const Bvh& bvh, const PrimaryRays& camera, const Bl
     // from its rectangle; else the camera rays (a block of 8 rows as 64 rays), then every pair's
     // shadow rays.
     const int paired = count / 2 * 2;
-    bool full = count == kPacketSize;
-    for (int k = 0; k < count && full; ++k) {
-        full = rays[k].lanes == 0xffu;
-    }
-    if (full && imageRectMissesScene(bvh, camera, blocked.rect[block])) {
+    if (fullBlock(rays, count) && imageRectMissesScene(bvh, camera, blocked.rect[block])) {
         for (int k = 0; k < count; ++k) {
             hits[k].clear();
         }

@@ -62,8 +62,8 @@ struct BenchReport {
     std::size_t cameraBlocks = 0, cameraBlocksThroughCandidates = 0;
     std::size_t shadowBlocks = 0, shadowBlocksThroughCandidates = 0; // blocks with shadow rays
     // The same blocks as packets of 16 rays, full blocks as four 4 x 4 tiles and the others
-    // two rows at a time (traceBlockInPacketPairs: AVX-512 where the CPU has it), timed in the
-    // same turns.
+    // two rows at a time (traceBlockInPacketPairs: AVX-512 where the CPU has it, else two 8-ray
+    // packets), timed in the same turns.
     bool packets16 = false;
     TracerFigures raylabPackets16;
     std::size_t packet16Mismatches = 0; // answers where they and packets differ (must be 0)

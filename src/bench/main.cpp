@@ -9,11 +9,11 @@
 // raylab traces packets of 8 consecutive rays (core/bvh_packet.h) and, in the same turns, 8 x 8
 // pixel blocks through frustum candidates as the renderer does (core/bvh_frustum.h,
 // bench_blocks.h), the same blocks' rows two by two as packets of 16 rays (AVX-512 where the CPU
-// has it, as the renderer traces meshes) and single rays; bounce rays in every case as the path
-// integrator traces them (closestHits: interleaved walks on large scenes, else one by one).
-// Bench-only flags: BenchOptions in io/command_line.h. Exit codes: 2 usage, 1 other errors, too
-// many hits disagreeing with Embree, or packets, blocks, 16-ray packets and single rays not giving
-// identical answers.
+// has it, else two of 8, as the renderer traces meshes) and single rays; bounce rays in every case
+// as the path integrator traces them (closestHits: interleaved walks on large scenes, else one by
+// one). Bench-only flags: BenchOptions in io/command_line.h. Exit codes: 2 usage, 1 other errors,
+// too many hits disagreeing with Embree, or packets, blocks, 16-ray packets and single rays not
+// giving identical answers.
 
 #include "bench_blocks.h"
 #include "bench_checks.h"

@@ -70,4 +70,18 @@ struct alignas(32) HitPacket {
 // Lanes [0, count) of a packet, 0 <= count <= kPacketSize.
 constexpr unsigned firstLanes(int count) { return (1u << count) - 1u; }
 
+// Whether packets[0, count) are a full block of rays: kPacketSize packets (the rows of an 8 x 8
+// pixel block, or its 4 x 2 halves of tiles) of kPacketSize lanes each.
+inline bool fullBlock(const RayPacket* packets, int count) {
+    if (count != kPacketSize) {
+        return false;
+    }
+    for (int k = 0; k < count; ++k) {
+        if (packets[k].lanes != firstLanes(kPacketSize)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace raylab

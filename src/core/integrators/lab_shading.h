@@ -64,7 +64,7 @@ void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& setting
 
 // How shadeLabBlock traces a block's rays: through frustum candidates (bvh_frustum.h: one walk
 // for the block's camera rays, one for its shadow rays), or packet by packet (16-ray packets in
-// 4 x 4 tiles where the CPU has AVX-512, else 8-ray packets). `ForScene` is tracingFor's choice.
+// 4 x 4 tiles where the CPU has AVX2, else 8-ray packets). `ForScene` is tracingFor's choice.
 enum class BlockTracing { ForScene, Frustums, Packets };
 
 // The renderer's choice for this scene and CPU (Frustums or Packets): the one rule the renderer
@@ -89,8 +89,8 @@ constexpr BlockPixel tilePixel(int packet, int lane) {
 // shadeLab8 for each of rays[0, count), 0 <= count <= kPacketSize, with the same results: the
 // rays of an image block (camera rays from one origin), traced as `tracing` says (frustums only
 // where the CPU has AVX2 and the BVH its 8-wide form; packets otherwise). `lastOccluder`, when
-// given, carries the 16-ray shadow packets' LastOccluder (bvh_packet.h) from block to block: a
-// caller passes one for the blocks of a tile, on one BVH.
+// given, carries the shadow packets' LastOccluder (bvh_packet.h) from block to block: a caller
+// passes one for the blocks of a tile, on one BVH.
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts,
                    BlockTracing tracing = BlockTracing::ForScene,

@@ -1,11 +1,12 @@
 // shadeLabBlock: through frustums, the packets of an image block share one frustum walk for their
 // camera rays and one for their shadow rays (bvh_frustum.h), and packets whose frustum holds too
 // many triangles are traced one by one through the BVH; packet by packet, a block is traced as
-// packets of 16 rays where the CPU has AVX-512 (closestHit16): a full block as four 4 x 4 tiles,
-// else its rows two by two, and the camera rays of a block of 8 rows as one packet of 64
-// (closestHit64, the four 16-ray packets in one walk), or none when the block's image rectangle
-// misses the scene (imageRectMissesScene); without AVX-512, row by row. Either way each lane's
-// radiance is shadeLab8's.
+// packets of 16 rays (closestHit16: one packet where the CPU has AVX-512, two of 8 rays where it
+// has AVX2 alone): a full block as four 4 x 4 tiles, else its rows two by two, and the camera rays
+// of a block of 8 rows as one packet of 64 (closestHit64, the four 16-ray packets in one walk
+// where the CPU has AVX-512), or none when the block's image rectangle misses the scene
+// (imageRectMissesScene); without AVX2, row by row. Either way each lane's radiance is
+// shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -36,7 +37,7 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
 // as fast, where without Embree in the process, and in the renderer's passes, the two orders run as
 // fast (why is not known). The shadow rays test `last` first and leave their last occluder in it
 // (LastOccluder). `background`: every camera ray is known to miss (imageRectMissesScene), so none
-// is traced. 1 <= pairs <= kPacketSize / 2. Call only where bvhPacket16Supported() and
+// is traced. 1 <= pairs <= kPacketSize / 2. Call only where bvhSimdSupported() and
 // bvh.wideNodes is not empty.
 void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int pairs, RadiancePacket* radiance, RayCounts& counts,
@@ -117,19 +118,6 @@ void shadeTiles(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
     }
 }
 
-// Whether rays are a full block: 8 packets of 8 lanes.
-bool fullBlock(const RayPacket* rays, int count) {
-    if (count != kPacketSize) {
-        return false;
-    }
-    for (int k = 0; k < count; ++k) {
-        if (rays[k].lanes != firstLanes(kPacketSize)) {
-            return false;
-        }
-    }
-    return true;
-}
-
 // shadeLabBlock, with the camera rays' frustum from `camera` and `rect` when camera is set.
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
@@ -140,9 +128,8 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
         tracing = tracingFor(bvh);
     }
     if (tracing == BlockTracing::Packets || !simd || bvh.wideNodes.empty()) {
-        static const bool pairs = bvhPacket16Supported();
         int k = 0;
-        if (pairs && !bvh.wideNodes.empty()) {
+        if (simd && !bvh.wideNodes.empty()) {
             LastOccluder blockOnly;
             LastOccluder& last = lastOccluder != nullptr ? *lastOccluder : blockOnly;
             if (fullBlock(rays, count)) {
