@@ -1,9 +1,9 @@
-// Packets of 64 rays (closestHit64: four 16-ray packets in one walk of the BVH) against single
+// Packets of 64 rays (closestHit64: one walk of the BVH for eight RayPackets) against single
 // rays, the scalar reference and brute force: every lane's answer bit for bit, on both paths
-// (the AVX-512 walk, skipped on CPUs without it, and four closestHit16 calls on two 8-ray packets
-// each). What only 64-ray packets have: one frustum for four packets (valid, or not when their
-// directions differ in sign), pairs traced on their own (halves of different permutations),
-// packets without lanes, 64-bit lane masks, and a pending child kept for some packets' lanes.
+// (the AVX-512 walk of four 16-ray packets, skipped on CPUs without it, and the AVX2 walk of eight
+// 8-ray packets). What only 64-ray packets have: one frustum for all packets (valid, or not when
+// their directions differ in sign), pairs or packets of different permutations, packets without
+// lanes, 64-bit lane masks, and a pending child kept for some packets' lanes.
 
 #include "accel_packet16_check.h"
 #include "accel_packet_rays.h"

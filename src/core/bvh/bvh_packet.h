@@ -47,9 +47,9 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
                   HitPacket& highHits);
 
 // Packets of 64 rays: rays[0, 8), each pair rays[2w], rays[2w + 1] as closestHit16's low and
-// high, into hits[0, 8), with the same answers as closestHit8 of each. Where the CPU has AVX-512
-// the four pairs are traced in one walk of the BVH, whose node visits then serve 64 rays; else as
-// four closestHit16 calls. For the camera rays of a block of 8 x 8 pixels, each pair a 4 x 4 tile
+// high, into hits[0, 8), with the same answers as closestHit8 of each, traced in one walk of the
+// BVH whose node visits serve the 64 rays: as four 16-ray packets where the CPU has AVX-512, else
+// as eight 8-ray packets. For the camera rays of a block of 8 x 8 pixels, each pair a 4 x 4 tile
 // (tilePixel, lab_shading.h).
 void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits);
 

@@ -3,10 +3,9 @@
 // many triangles are traced one by one through the BVH; packet by packet, a block is traced as
 // packets of 16 rays (closestHit16: one packet where the CPU has AVX-512, two of 8 rays where it
 // has AVX2 alone): a full block as four 4 x 4 tiles, else its rows two by two, and the camera rays
-// of a block of 8 rows as one packet of 64 (closestHit64, the four 16-ray packets in one walk
-// where the CPU has AVX-512), or none when the block's image rectangle misses the scene
-// (imageRectMissesScene); without AVX2, row by row. Either way each lane's radiance is
-// shadeLab8's.
+// of a block of 8 rows as one packet of 64 (closestHit64: one walk of the BVH for the four tiles),
+// or none when the block's image rectangle misses the scene (imageRectMissesScene); without AVX2,
+// row by row. Either way each lane's radiance is shadeLab8's.
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"

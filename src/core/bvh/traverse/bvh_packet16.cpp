@@ -4,6 +4,7 @@
 
 #include "bvh/bvh_packet.h"
 #include "bvh/traverse/bvh_packet16_traverse.h"
+#include "bvh/traverse/bvh_packet_traverse.h"
 
 namespace raylab {
 
@@ -45,13 +46,15 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
 }
 
 void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path) {
-    if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
+    if (bvh.wideNodes.empty()) {
         for (int k = 0; k < kPacketSize; k += 2) {
             closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1], path);
         }
         return;
     }
-    const uint64_t single = closestHitPacket64(bvh, rays, hits);
+    const uint64_t single = path == Packet16Path::TwoPackets8
+                                ? closestHitEightPackets(bvh, rays, hits)
+                                : closestHitPacket64(bvh, rays, hits);
     for (uint64_t m = single; m != 0; m &= m - 1) {
         const int i = __builtin_ctzll(m);
         const int k = i / kPacketSize, lane = i % kPacketSize;

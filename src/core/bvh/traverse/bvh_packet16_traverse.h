@@ -36,7 +36,7 @@ unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& h
                         unsigned& occluded, LastOccluder* last = nullptr);
 
 // closestHit64 (bvh_packet.h) on `path`: the AVX-512 walk of 64 rays (closestHitPacket64), or
-// four closestHit16 calls on the two 8-ray packets' path.
+// on the two 8-ray packets' path the AVX2 walk of eight 8-ray packets (closestHitEightPackets).
 void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path);
 
 // Traces the eight RayPackets rays[0, 8) as four 16-ray packets (rays[2w] lanes 0-7 and

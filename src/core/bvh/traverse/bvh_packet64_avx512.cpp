@@ -51,42 +51,13 @@ inline uint64_t asLanes64(unsigned lanes, int w) {
     return static_cast<uint64_t>(lanes) << (kPacket16Size * w);
 }
 
-// The frustum of the packets' lanes: each packet's frustum (makeFrustum) bounds its lanes, so
-// their joined intervals bound all of them. Invalid when a packet's is, or when two packets'
-// inverse directions differ in sign on an axis.
+// The frustum of the packets' lanes (joinFrustums of each packet's, makeFrustum).
 RAYLAB_AVX512 inline Frustum joinFrustums(const Packet64& p) {
-    Frustum f;
-    bool any = false;
-    for (const Packet16& q : p.packet) {
-        if (q.lanes == 0) {
-            continue;
-        }
-        const Frustum& g = q.frustum;
-        if (!g.valid) {
-            return Frustum{};
-        }
-        if (!any) {
-            f = g;
-            any = true;
-            continue;
-        }
-        for (int a = 0; a < 3; ++a) {
-            if (g.nearOffset[a] != f.nearOffset[a]) {
-                return Frustum{};
-            }
-            // As makeFrustum: towards -a (near bound upper) the near origin is the smallest.
-            const bool nearIsUpper = f.nearOffset[a] >= 3 * kWideLanes;
-            f.nearOrigin[a] = nearIsUpper ? _mm256_min_ps(f.nearOrigin[a], g.nearOrigin[a])
-                                          : _mm256_max_ps(f.nearOrigin[a], g.nearOrigin[a]);
-            f.farOrigin[a] = nearIsUpper ? _mm256_max_ps(f.farOrigin[a], g.farOrigin[a])
-                                         : _mm256_min_ps(f.farOrigin[a], g.farOrigin[a]);
-            f.inverseMin[a] = _mm256_min_ps(f.inverseMin[a], g.inverseMin[a]);
-            f.inverseMax[a] = _mm256_max_ps(f.inverseMax[a], g.inverseMax[a]);
-        }
-        f.tMin = _mm256_min_ps(f.tMin, g.tMin);
+    const Frustum* frustums[kPackets];
+    for (int w = 0; w < kPackets; ++w) {
+        frustums[w] = p.packet[w].lanes != 0 ? &p.packet[w].frustum : nullptr;
     }
-    f.valid = any;
-    return f;
+    return joinFrustums(frustums, kPackets);
 }
 
 struct Entry64 {

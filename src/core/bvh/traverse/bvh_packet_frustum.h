@@ -82,6 +82,52 @@ RAYLAB_AVX2 inline void makeFrustum8(const PacketRays& p, Frustum& f) {
     f.tMin = _mm256_set1_ps(f.valid ? laneMin(p.tMin, p.lanes) : 0.0f);
 }
 
+// Widens f to bound also the lanes g bounds (both valid): false, f unusable, when their inverse
+// directions differ in sign on an axis (then no frustum of this form bounds both).
+RAYLAB_AVX2 inline bool joinFrustum(Frustum& f, const Frustum& g) {
+    for (int a = 0; a < 3; ++a) {
+        if (g.nearOffset[a] != f.nearOffset[a]) {
+            return false;
+        }
+        // As makeFrustum8: towards -a (near bound upper) the near origin is the smallest.
+        const bool nearIsUpper = f.nearOffset[a] >= 3 * kWideLanes;
+        f.nearOrigin[a] = nearIsUpper ? _mm256_min_ps(f.nearOrigin[a], g.nearOrigin[a])
+                                      : _mm256_max_ps(f.nearOrigin[a], g.nearOrigin[a]);
+        f.farOrigin[a] = nearIsUpper ? _mm256_max_ps(f.farOrigin[a], g.farOrigin[a])
+                                     : _mm256_min_ps(f.farOrigin[a], g.farOrigin[a]);
+        f.inverseMin[a] = _mm256_min_ps(f.inverseMin[a], g.inverseMin[a]);
+        f.inverseMax[a] = _mm256_max_ps(f.inverseMax[a], g.inverseMax[a]);
+    }
+    f.tMin = _mm256_min_ps(f.tMin, g.tMin);
+    return true;
+}
+
+// The frustum of several packets' lanes, frustums[k] being packet k's (nullptr for a packet
+// without lanes): each bounds its packet's lanes, so their joined intervals bound all of them.
+// Invalid when a packet's is, when two packets' inverse directions differ in sign on an axis, or
+// when no packet has lanes.
+RAYLAB_AVX2 inline Frustum joinFrustums(const Frustum* const* frustums, int count) {
+    Frustum f;
+    bool any = false;
+    for (int k = 0; k < count; ++k) {
+        const Frustum* g = frustums[k];
+        if (g == nullptr) {
+            continue;
+        }
+        if (!g->valid) {
+            return Frustum{};
+        }
+        if (!any) {
+            f = *g;
+            any = true;
+        } else if (!joinFrustum(f, *g)) {
+            return Frustum{};
+        }
+    }
+    f.valid = any;
+    return f;
+}
+
 // Of 8 boxes given as lower[3][8] then upper[3][8] floats (BvhWideNode's layout), those some
 // lane may enter before `limitMax` (the lanes' largest limit): a superset of the boxes any lane's
 // own slab test keeps (hitChild), since each lane's near distance is at least the frustum's and
