@@ -93,18 +93,12 @@ RAYLAB_AVX2 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, co
     unsigned candidates = 0xffu, firstLane = 0;
     alignas(32) float frustumNear[kWideLanes];
     if (p.frustum.valid) {
-        __m256 tNear;
-        candidates = frustumBoxes(&node.lower[0][0], p.frustum, p.limitMax, tNear);
+        const int l = __builtin_ctzll(active);
+        candidates = frustumChildren(node, p.frustum, p.limitMax, p.cull[l / kPacketSize],
+                                     l % kPacketSize, frustumNear, firstLane);
         if (candidates == 0) {
             return 0; // no lane enters a child
         }
-        _mm256_store_ps(frustumNear, tNear);
-        const int l = __builtin_ctzll(active);
-        const PacketCulling& c = p.cull[l / kPacketSize];
-        const int i = l % kPacketSize;
-        const float origin[3] = {c.origin[0][i], c.origin[1][i], c.origin[2][i]};
-        const float inverse[3] = {c.inverse[0][i], c.inverse[1][i], c.inverse[2][i]};
-        firstLane = candidates & laneChildren(node, origin, inverse, c.tMin[i], c.limit[i]);
     }
     int n = 0;
     for (unsigned m = candidates; m != 0; m &= m - 1) {

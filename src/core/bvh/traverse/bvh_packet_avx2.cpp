@@ -55,16 +55,11 @@ RAYLAB_AVX2 inline int hitChildren(const Bvh& bvh, const BvhWideNode& node, cons
     unsigned candidates = 0xffu, firstLane = 0;
     alignas(32) float frustumNear[kWideLanes];
     if (cull.frustum.valid) {
-        __m256 tNear;
-        candidates = frustumBoxes(&node.lower[0][0], cull.frustum, cull.limitMax, tNear);
+        candidates = frustumChildren(node, cull.frustum, cull.limitMax, cull, __builtin_ctz(active),
+                                     frustumNear, firstLane);
         if (candidates == 0) {
             return 0; // no lane enters a child
         }
-        _mm256_store_ps(frustumNear, tNear);
-        const int l = __builtin_ctz(active);
-        const float origin[3] = {cull.origin[0][l], cull.origin[1][l], cull.origin[2][l]};
-        const float inverse[3] = {cull.inverse[0][l], cull.inverse[1][l], cull.inverse[2][l]};
-        firstLane = candidates & laneChildren(node, origin, inverse, cull.tMin[l], cull.limit[l]);
     }
     for (unsigned m = candidates; m != 0; m &= m - 1) {
         const int c = __builtin_ctz(m);

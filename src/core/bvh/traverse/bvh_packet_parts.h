@@ -29,6 +29,27 @@ RAYLAB_AVX2 inline void setLimits(const PacketRays& p, __m256 limit, PacketCulli
     }
 }
 
+// The children of `node` that frustum `f` lets some lane enter before `limitMax` (frustumBoxes;
+// 0 when none), their frustum near distances in frustumNear[0, 8), and in `firstLane` those of
+// them that lane l of the packet culled by `c` enters itself (laneChildren): a traversal takes
+// these with every active lane and tests only the others lane by lane. `f` is c's frustum or one
+// that also bounds other packets' lanes; it must be valid.
+RAYLAB_AVX2 inline unsigned frustumChildren(const BvhWideNode& node, const Frustum& f,
+                                            float limitMax, const PacketCulling& c, int l,
+                                            float* frustumNear, unsigned& firstLane) {
+    __m256 tNear;
+    const unsigned candidates = frustumBoxes(&node.lower[0][0], f, limitMax, tNear);
+    firstLane = 0;
+    if (candidates == 0) {
+        return 0;
+    }
+    _mm256_store_ps(frustumNear, tNear);
+    const float origin[3] = {c.origin[0][l], c.origin[1][l], c.origin[2][l]};
+    const float inverse[3] = {c.inverse[0][l], c.inverse[1][l], c.inverse[2][l]};
+    firstLane = candidates & laneChildren(node, origin, inverse, c.tMin[l], c.limit[l]);
+    return candidates;
+}
+
 RAYLAB_AVX2 inline void makeCulling(const PacketRays& p, PacketCulling& c) {
     makeFrustum8(p, c.frustum);
     if (!c.frustum.valid) {
