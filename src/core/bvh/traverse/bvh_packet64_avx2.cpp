@@ -11,10 +11,7 @@
 // - in a leaf each packet with active lanes is tested as the 8-ray traversal tests it
 //   (testLeaf), with its own, narrower frustum;
 // - a pending child is visited again only for the lanes whose closest hit so far lies beyond its
-//   entry distance;
-// - a node that only one packet's lanes reach is handed with its subtree to that packet's own
-//   walk (closestHitSubtree, the 8-ray traversal's), whose narrower frustum culls there: where a
-//   block's packets part ways (the dragon's silhouettes and thin parts), each goes on alone.
+//   entry distance.
 // Each culling test keeps a superset of the lanes' own slab tests, and every triangle test is the
 // 8-ray packets', so each lane's answer is the single ray's bit for bit. Each packet keeps its own
 // ray permutation; its lanes of another permutation go to the single-ray path, as in the 8-ray
@@ -44,12 +41,6 @@ inline unsigned packetLanes(uint64_t lanes, int k) {
 
 inline uint64_t asLanes64(unsigned lanes, int k) {
     return static_cast<uint64_t>(lanes) << (kPacketSize * k);
-}
-
-// The packet that holds every lane of `lanes` (not 0), or -1 when they lie in more than one.
-inline int onlyPacket(uint64_t lanes) {
-    const int k = __builtin_ctzll(lanes) / kPacketSize;
-    return (lanes >> (kPacketSize * k)) <= 0xffu ? k : -1;
 }
 
 struct EightPackets {
@@ -168,11 +159,7 @@ RAYLAB_AVX2 void walk64(const Bvh& bvh, EightPackets& p, HitPacket* hits) {
     uint32_t ref = 0;
     uint64_t active = p.lanes;
     for (;;) {
-        if (const int k = onlyPacket(active); k >= 0 && !isLeaf(ref)) {
-            closestHitSubtree(bvh, ref, p.packet[k], p.cull[k], p.rays[k], p.best[k], p.limit[k],
-                              packetLanes(active, k));
-            updateLimits(0, p);
-        } else if (!isLeaf(ref)) {
+        if (!isLeaf(ref)) {
             const int n = hitChildren64(bvh, bvh.wideNodes[ref], p, active, stack + size);
             if (n > 0) {
                 size += n - 1;

@@ -136,15 +136,23 @@ RAYLAB_AVX2 inline unsigned lastOccluderLanes(const Bvh& bvh, const PacketRays& 
 
 } // namespace
 
-namespace packet_lanes {
-
-RAYLAB_AVX2 void closestHitSubtree(const Bvh& bvh, uint32_t root, const PacketRays& p,
-                                   PacketCulling& cull, const RayPacket& rays, PacketBest& best,
-                                   __m256& limit, unsigned active) {
+RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
+    PacketRays p;
+    makePacket(rays, p);
+    const unsigned lanes = p.lanes;
+    if (lanes == 0) {
+        hits.clear();
+        return p.others;
+    }
+    PacketCulling cull;
+    makeCulling(p, cull);
+    PacketBest best = noHitYet();
+    __m256 limit = p.tMax; // per lane: min(tMax, best.t)
     const __m256 roundUp = _mm256_set1_ps(kBoxRoundUp);
     PacketEntry stack[kWideStackSize];
     int size = 0;
-    uint32_t ref = root;
+    uint32_t ref = 0;
+    unsigned active = lanes;
     for (;;) {
         if (!isLeaf(ref)) {
             PacketEntry children[kWideLanes];
@@ -163,7 +171,8 @@ RAYLAB_AVX2 void closestHitSubtree(const Bvh& bvh, uint32_t root, const PacketRa
         // Next: the nearest pending entry that some lane may still find a closer hit in.
         for (;;) {
             if (size == 0) {
-                return;
+                writeBest(best, lanes, hits);
+                return p.others;
             }
             const PacketEntry& e = stack[--size];
             const unsigned open =
@@ -176,25 +185,6 @@ RAYLAB_AVX2 void closestHitSubtree(const Bvh& bvh, uint32_t root, const PacketRa
             }
         }
     }
-}
-
-} // namespace packet_lanes
-
-RAYLAB_AVX2 unsigned closestHitPacket(const Bvh& bvh, const RayPacket& rays, HitPacket& hits) {
-    PacketRays p;
-    makePacket(rays, p);
-    const unsigned lanes = p.lanes;
-    if (lanes == 0) {
-        hits.clear();
-        return p.others;
-    }
-    PacketCulling cull;
-    makeCulling(p, cull);
-    PacketBest best = noHitYet();
-    __m256 limit = p.tMax;
-    closestHitSubtree(bvh, 0, p, cull, rays, best, limit, lanes);
-    writeBest(best, lanes, hits);
-    return p.others;
 }
 
 RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded,

@@ -161,11 +161,4 @@ RAYLAB_AVX2 inline void testLeaf(const Bvh& bvh, uint32_t ref, const PacketRays&
     }
 }
 
-// The closest hits of the lanes `active` of packet p among the triangles under node `root` (the
-// 8-ray traversal's walk of that subtree, bvh_packet_avx2.cpp), kept in best, with limit (per
-// lane min(tMax, best t)) and cull's limits kept up to date. The 64-ray walk
-// (bvh_packet64_avx2.cpp) hands a subtree to it once only one of its packets has lanes there.
-void closestHitSubtree(const Bvh& bvh, uint32_t root, const PacketRays& p, PacketCulling& cull,
-                       const RayPacket& rays, PacketBest& best, __m256& limit, unsigned active);
-
 } // namespace raylab::packet_lanes
