@@ -64,12 +64,12 @@ void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet
 
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, Packet16Path path,
                   LastOccluder* last) {
-    if ((path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) && last != nullptr) {
+    if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
+        if (last == nullptr) {
+            return anyHit8(bvh, low) | anyHit8(bvh, high) << kPacketSize;
+        }
         const unsigned lowOccluded = anyHit8(bvh, low, *last);
         return lowOccluded | anyHit8(bvh, high, *last) << kPacketSize;
-    }
-    if (path == Packet16Path::TwoPackets8 || bvh.wideNodes.empty()) {
-        return anyHit8(bvh, low) | anyHit8(bvh, high) << kPacketSize;
     }
     unsigned occluded = 0;
     const unsigned single = anyHitPacket16(bvh, low, high, occluded, last);
