@@ -21,6 +21,7 @@
 
 #if defined(__x86_64__) || defined(__i386__)
 
+#include "bvh/traverse/bvh_packet64_entry.h"
 #include "bvh/traverse/bvh_packet_parts.h"
 
 #include <algorithm>
@@ -52,12 +53,6 @@ struct EightPackets {
     Frustum frustum;                 // of every packet's lanes
     float limitMax = -kInfinity;     // the largest limit of all lanes (with a valid frustum)
     uint64_t lanes = 0;
-};
-
-struct Entry64 {
-    float tNear; // at most the entry distance of each of its lanes
-    uint32_t ref;
-    uint64_t lanes; // a superset of the lanes whose ray enters the box
 };
 
 // The frustum of the packets' lanes (joinFrustums of each packet's, makeFrustum8).
@@ -129,11 +124,7 @@ RAYLAB_AVX2 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, co
             }
         }
         prefetchChild(bvh, node.child[c]);
-        int i = n++;
-        for (; i > 0 && out[i - 1].tNear < tNear; --i) {
-            out[i] = out[i - 1];
-        }
-        out[i] = Entry64{tNear, node.child[c], lanes};
+        n = insertNearestLast(out, n, Entry64{tNear, node.child[c], lanes});
     }
     return n;
 }

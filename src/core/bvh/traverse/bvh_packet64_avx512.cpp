@@ -24,6 +24,7 @@
 #if defined(__x86_64__) || defined(__i386__)
 
 #include "bvh/traverse/bvh_packet16_parts.h"
+#include "bvh/traverse/bvh_packet64_entry.h"
 
 #include <algorithm>
 
@@ -59,12 +60,6 @@ RAYLAB_AVX512 inline Frustum joinFrustums(const Packet64& p) {
     }
     return joinFrustums(frustums, kPackets);
 }
-
-struct Entry64 {
-    float tNear; // at most the entry distance of each of its lanes
-    uint32_t ref;
-    uint64_t lanes; // a superset of the lanes whose ray enters the box
-};
 
 // The closest hits so far and what they bound: per packet, each lane's limit min(tMax, best t)
 // and the largest of them; as floats per lane for laneChildren; the largest of all.
@@ -148,11 +143,7 @@ RAYLAB_AVX512 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, 
             tNear = _mm512_reduce_min_ps(least);
         }
         prefetchChild(bvh, node.child[c]);
-        int i = n++;
-        for (; i > 0 && out[i - 1].tNear < tNear; --i) {
-            out[i] = out[i - 1];
-        }
-        out[i] = Entry64{tNear, node.child[c], lanes};
+        n = insertNearestLast(out, n, Entry64{tNear, node.child[c], lanes});
     }
     return n;
 }
