@@ -153,6 +153,25 @@ TEST_P(BvhPacket16, LastOccluderChangesNoAnswer) {
     EXPECT_GT(remembered, occludedPackets / 2);
 }
 
+// Shadow rays of neighbouring hits on a height field towards a light beyond its bounds on every
+// axis: every direction has the same signs, so a frustum bounds each packet's lanes (the shadow
+// rays' usual case), and the field's hills occlude more than half of them; the LastOccluder is
+// carried from packet to packet.
+TEST_P(BvhPacket16, ShadowRaysOfAHeightFieldMatchBruteForce) {
+    const Scene field = makeHeightField(48, 41);
+    const Bvh bvh = buildBvh(field);
+    Camera camera;
+    camera.position = {0.1f, -0.2f, -1.9f};
+    const std::vector<Ray> rays = cameraRays(camera, 96, 64);
+    for (const glm::vec3& light : {glm::vec3(1.6f, 1.4f, -0.6f), glm::vec3(-1.5f, 1.8f, -0.7f)}) {
+        const std::vector<Ray> shadows = shadowRaysOf(bvh, rays, light);
+        ASSERT_GE(shadows.size(), 3000u);
+        const int occluded = expectPackets(bvh, shadows, &field);
+        EXPECT_GT(occluded, static_cast<int>(shadows.size()) / 2);
+        EXPECT_LT(occluded, static_cast<int>(shadows.size()));
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Paths, BvhPacket16,
                          ::testing::Values(Packet16Path::Avx512, Packet16Path::TwoPackets8),
                          packet16PathName);
