@@ -11,8 +11,9 @@
 //   reach a block than it has such triangles, each ray against the block's 8 triangles at once
 //   (the single-ray traversal's test).
 // Any hit with a LastOccluder (bvh_packet.h) first tests the triangle that occluded a lane of an
-// earlier packet against all lanes, then the other triangles of its block against the lanes left
-// open, traverses only for the lanes still open, and remembers a triangle that a lane hits.
+// earlier packet against all lanes (before the frustum is made, which a packet it answers whole
+// never needs), then the other triangles of its block against the lanes left open, traverses
+// only for the lanes still open, and remembers a triangle that a lane hits.
 // Keeping a box or a triangle for a lane that misses it costs time, never an answer.
 //
 // Exactness, lane by lane: the triangle test is intersectTriangle (triangle_intersection.cpp)
@@ -107,20 +108,16 @@ RAYLAB_AVX2 inline void descend(const PacketEntry* children, int n, PacketEntry*
     active = children[n - 1].lanes;
 }
 
-// The lanes of p that the triangles of last's block (one of bvh's) occlude: last's triangle
-// against all lanes, then, while some are open, each other triangle of its block that an open lane
-// may hit (frustumTriangles) against the open lanes. Neighbouring shadow rays that last's triangle
-// leaves open are often blocked by a triangle next to it. last's slot moves to a triangle that
-// occludes a lane.
-RAYLAB_AVX2 inline unsigned lastOccluderLanes(const Bvh& bvh, const PacketRays& p,
-                                              const PacketCulling& cull, const RayPacket& rays,
-                                              LastOccluder& last) {
+// The lanes of p that the other triangles of last's block (one of bvh's) occlude, given `found`,
+// those its triangle occludes: while some lane is open, each other triangle of the block that an
+// open lane may hit (frustumTriangles) against the open lanes. Neighbouring shadow rays that
+// last's triangle leaves open are often blocked by a triangle next to it. last's slot moves to a
+// triangle that occludes a lane. Returns found with those lanes added.
+RAYLAB_AVX2 inline unsigned lastBlockLanes(const Bvh& bvh, const PacketRays& p,
+                                           const PacketCulling& cull, const RayPacket& rays,
+                                           LastOccluder& last, unsigned found) {
     const BvhTriangleBlock& block = bvh.triangleBlocks[last.block];
     const int slot = last.slot & (kWideLanes - 1);
-    unsigned found = hitLanes(block, slot, p, rays, p.lanes);
-    if (found == p.lanes) {
-        return found;
-    }
     const unsigned others = distinctTriangles(block) & ~(1u << slot) &
                             frustumTriangles(block, bvh.boxPad, cull.frustum, cull.limitMax);
     for (unsigned m = others; m != 0 && found != p.lanes; m &= m - 1) {
@@ -196,11 +193,22 @@ RAYLAB_AVX2 unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigne
     if (lanes == 0) {
         return p.others;
     }
+    unsigned found = 0; // lanes with a hit
+    const bool remembered = last != nullptr && last->block < bvh.triangleBlocks.size();
+    if (remembered) {
+        // Before the frustum is made: a packet whose every lane this triangle occludes (half of
+        // Sponza's shadow packets) needs none.
+        found = hitLanes(bvh.triangleBlocks[last->block], last->slot & (kWideLanes - 1), p, rays,
+                         lanes);
+        if (found == lanes) {
+            occluded = found;
+            return p.others;
+        }
+    }
     PacketCulling cull;
     makeCulling(p, cull);
-    unsigned found = 0; // lanes with a hit
-    if (last != nullptr && last->block < bvh.triangleBlocks.size()) {
-        found = lastOccluderLanes(bvh, p, cull, rays, *last);
+    if (remembered) {
+        found = lastBlockLanes(bvh, p, cull, rays, *last, found);
         if (found == lanes) {
             occluded = found;
             return p.others;
