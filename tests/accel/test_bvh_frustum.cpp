@@ -367,6 +367,94 @@ TEST(BvhFrustum, ImageRectMissesSceneOnlyWhereEveryRayMisses) {
     EXPECT_GT(raysChecked, 8000);
 }
 
+// imageRectMissesScene keeps the rectangle's planes in registers; its answer is that of the
+// pyramid frustumOfImageRect makes, tested against the root's children plane by plane with each
+// box's corner farthest along the plane's normal (the reference here, in the same float
+// operations), on rectangles of every size and place, whole pixels or parts of them.
+TEST(BvhFrustum, ImageRectMissesSceneIsTheRectanglesPyramidAgainstTheRoot) {
+    if (!bvhSimdSupported()) {
+        GTEST_SKIP() << "no AVX2";
+    }
+    const Scene scenes[] = {makeTriangleSoup(300, 0.6f, 3), makeHeightField(12, 5),
+                            makeCornellBox()};
+    std::mt19937 random(33);
+    std::uniform_real_distribution<float> position(-4.0f, 4.0f);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    constexpr int kWidth = 64, kHeight = 48;
+    int missing = 0, notMissing = 0;
+    for (const Scene& scene : scenes) {
+        const Bvh bvh = buildBvh(scene);
+        ASSERT_FALSE(bvh.wideNodes.empty());
+        const BvhWideNode& root = bvh.wideNodes[0];
+        for (int view = 0; view < 40; ++view) {
+            Camera camera;
+            camera.position = {position(random), position(random), position(random)};
+            lookAt(camera, {0.3f * position(random), 0.3f * position(random), 0.0f});
+            camera.verticalFovDegrees = 5.0f + 160.0f * unit(random);
+            const PrimaryRays primary(camera, kWidth, kHeight);
+            // Where the children's corners are seen: rectangles with an edge at one of them, or
+            // a hair's breadth to either side, are where the planes' tolerance decides.
+            std::vector<glm::vec2> corners;
+            for (int c = 0; c < kWideLanes; ++c) {
+                for (int k = 0; k < 8 && root.child[c] != kWideEmpty; ++k) {
+                    const glm::vec3 corner{(k & 1 ? root.upper : root.lower)[0][c],
+                                           (k & 2 ? root.upper : root.lower)[1][c],
+                                           (k & 4 ? root.upper : root.lower)[2][c]};
+                    const glm::vec3 seen = primary.cameraFrom(corner);
+                    if (seen.z > 0.0f) {
+                        corners.push_back(primary.imageFrom(seen));
+                    }
+                }
+            }
+            const float hair[] = {-1e-2f, -1e-3f, -1e-4f, 0.0f, 1e-4f, 1e-3f, 1e-2f};
+            std::uniform_int_distribution<int> pickHair(0, 6);
+            for (int r = 0; r < 50 + 4 * static_cast<int>(corners.size()); ++r) {
+                float x[2] = {kWidth * unit(random), kWidth * unit(random)};
+                float y[2] = {kHeight * unit(random), kHeight * unit(random)};
+                if (r % 5 == 0) { // whole pixels
+                    for (float* c : {&x[0], &x[1], &y[0], &y[1]}) {
+                        *c = std::floor(*c);
+                    }
+                }
+                if (r >= 50) { // an edge through a corner: the left, right, top or bottom one
+                    const glm::vec2 p = corners[static_cast<std::size_t>(r - 50) / 4];
+                    const float h = hair[pickHair(random)];
+                    ((r & 2) == 0 ? x : y)[r & 1] = ((r & 2) == 0 ? p.x : p.y) + h;
+                }
+                const ImageRect rect{std::min(x[0], x[1]), std::min(y[0], y[1]),
+                                     std::max(x[0], x[1]), std::max(y[0], y[1])};
+                RayFrustum frustum;
+                ASSERT_TRUE(frustumOfImageRect(bvh, primary, rect, frustum));
+                bool rootMissed = true;
+                for (int c = 0; c < kWideLanes; ++c) {
+                    if (root.child[c] == kWideEmpty) {
+                        continue;
+                    }
+                    bool inside = true;
+                    for (int j = 0; j < frustum.planeCount; ++j) {
+                        const glm::vec3& n = frustum.normal[j];
+                        float d[3];
+                        for (int a = 0; a < 3; ++a) {
+                            const float bound = n[a] >= 0.0f ? root.upper[a][c] : root.lower[a][c];
+                            d[a] = (bound - frustum.apex[a]) * n[a];
+                        }
+                        const float distance =
+                            ((d[0] + d[1]) + d[2]) + (frustum.offset[j] + frustum.tolerance);
+                        inside = inside && !(distance < 0.0f);
+                    }
+                    rootMissed = rootMissed && !inside;
+                }
+                const bool missed = imageRectMissesScene(bvh, primary, rect);
+                ASSERT_EQ(missed, rootMissed) << "rectangle (" << rect.x0 << ", " << rect.y0
+                                              << ") - (" << rect.x1 << ", " << rect.y1 << ")";
+                ++(missed ? missing : notMissing);
+            }
+        }
+    }
+    EXPECT_GT(missing, 500);
+    EXPECT_GT(notMissing, 500);
+}
+
 TEST(BvhFrustum, FarFromTheOriginStaysExact) {
     if (!bvhSimdSupported()) {
         GTEST_SKIP() << "no AVX2";

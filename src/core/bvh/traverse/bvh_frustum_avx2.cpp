@@ -1,6 +1,8 @@
-// Frustum culling with AVX2 (bvh_frustum.h). The pyramid is bounded by four planes through its
-// apex, one pair per axis of a basis (u, v) across the group's mean direction c: the tangents
-// a = (w.u) / (w.c) and b = (w.v) / (w.c) of every ray's vector w lie in [a0, a1] x [b0, b1].
+// Frustum culling with AVX2 (bvh_frustum.h). A group of rays' pyramid is bounded by four planes
+// through its apex, one pair per axis of a basis (u, v) across the group's mean direction c: the
+// tangents a = (w.u) / (w.c) and b = (w.v) / (w.c) of every ray's vector w lie in [a0, a1] x
+// [b0, b1]. A block's image rectangle gives its pyramid from the camera's basis alone
+// (frustumOfImageRect).
 
 #include "bvh/bvh_frustum.h"
 #include "bvh/bvh_packet.h"
@@ -9,6 +11,7 @@
 
 #include "bvh/build/bvh_collapse.h"
 #include "bvh/traverse/bvh_packet_lanes.h"
+#include "finite.h"
 
 #include <algorithm>
 #include <cmath>
@@ -286,12 +289,100 @@ RAYLAB_AVX2 bool collectAvx2(const Bvh& bvh, const RayFrustum& frustum, FrustumC
     return true;
 }
 
-// Whether no child of the root lies (partly) inside the frustum.
-RAYLAB_AVX2 bool missesRoot(const Bvh& bvh, const RayFrustum& frustum) {
-    PlaneRegisters r;
-    loadPlanes(frustum, r);
+// Whether frustumOfImageRect has a pyramid to make for `rect` before its planes are computed: the
+// CPU has AVX2, the BVH its 8-wide form, the camera's position is finite and the rectangle is
+// neither empty nor NaN.
+bool canFrameImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect) {
+    static const bool simd = bvhSimdSupported();
+    return simd && !bvh.wideNodes.empty() && isFinite(camera.origin) && rect.x0 <= rect.x1 &&
+           rect.y0 <= rect.y1;
+}
+
+// The unit inward normals of the four planes of rect's pyramid (frustumOfImageRect), plane j in
+// lane j of normal[axis]: px >= x0, px <= x1, py >= y0, py <= y1. False when a plane has no
+// finite, non-zero normal.
+RAYLAB_AVX2 inline bool imageRectNormals(const PrimaryRays& camera, const ImageRect& rect,
+                                         float (&normal)[3][4]) {
+    // A ray's vector w = right (px - halfWidth) + up (halfHeight - py) + forward focal, with the
+    // basis orthonormal, has dot(w, focal right - (x0 - halfWidth) forward) = focal (px - x0),
+    // which is >= 0 exactly when px >= x0; likewise for the other three edges. Plane j's normal
+    // is focals[j] times right (planes 0 and 1) or up (2 and 3), plus along[j] times forward.
+    const float focal = camera.focal;
+    const __m128 focals = _mm_setr_ps(focal, -focal, -focal, focal);
+    const __m128 along = _mm_setr_ps(-(rect.x0 - camera.halfWidth), rect.x1 - camera.halfWidth,
+                                     camera.halfHeight - rect.y0, -(camera.halfHeight - rect.y1));
+    const __m128 infinity = _mm_set1_ps(kInfinity);
+    const __m128 noSign = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+    __m128 inward[3];
+    __m128 finite = _mm_castsi128_ps(_mm_set1_epi32(-1));
+    for (int a = 0; a < 3; ++a) {
+        const float right = camera.right[a], up = camera.up[a];
+        inward[a] = _mm_add_ps(_mm_mul_ps(focals, _mm_setr_ps(right, right, up, up)),
+                               _mm_mul_ps(along, _mm_set1_ps(camera.forward[a])));
+        finite = _mm_and_ps(finite, _mm_cmplt_ps(_mm_and_ps(inward[a], noSign), infinity));
+    }
+    const __m128 length = _mm_sqrt_ps(
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(inward[0], inward[0]), _mm_mul_ps(inward[1], inward[1])),
+                   _mm_mul_ps(inward[2], inward[2])));
+    const __m128 ok = _mm_and_ps(
+        finite, _mm_and_ps(_mm_cmpgt_ps(length, _mm_setzero_ps()), _mm_cmplt_ps(length, infinity)));
+    if (_mm_movemask_ps(ok) != 0xf) {
+        return false;
+    }
+    for (int a = 0; a < 3; ++a) {
+        _mm_storeu_ps(normal[a], _mm_div_ps(inward[a], length));
+    }
+    return true;
+}
+
+RAYLAB_AVX2 bool frameImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
+                                RayFrustum& frustum) {
+    float normal[3][4];
+    if (!imageRectNormals(camera, rect, normal)) {
+        return false;
+    }
+    frustum.apex = camera.origin;
+    frustum.planeCount = 4;
+    for (int j = 0; j < 4; ++j) {
+        frustum.normal[j] = glm::vec3(normal[0][j], normal[1][j], normal[2][j]);
+        frustum.offset[j] = 0.0f;
+    }
+    frustum.tolerance = frustumTolerance(bvh, camera.origin);
+    return true;
+}
+
+// Whether no child of the root lies (partly) inside rect's pyramid: childrenInside against the
+// planes of frustumOfImageRect, with the planes kept in registers. Axis by axis, the corner of a
+// box farthest along a normal takes the larger of the two bounds' products with it, which is the
+// product childrenInside takes (its bound chosen by the normal's sign; where the normal's
+// component is zero both are zero), so each plane keeps or drops the same children.
+RAYLAB_AVX2 bool imageRectMissesRoot(const Bvh& bvh, const PrimaryRays& camera,
+                                     const ImageRect& rect) {
+    float normal[3][4];
+    if (!imageRectNormals(camera, rect, normal)) {
+        return false;
+    }
     const BvhWideNode& root = bvh.wideNodes[0];
-    for (unsigned m = childrenInside(root, r); m != 0; m &= m - 1) {
+    __m256 lower[3], upper[3]; // the children's bounds from the apex
+    for (int a = 0; a < 3; ++a) {
+        const __m256 apex = _mm256_set1_ps(camera.origin[a]);
+        lower[a] = _mm256_sub_ps(_mm256_load_ps(root.lower[a]), apex);
+        upper[a] = _mm256_sub_ps(_mm256_load_ps(root.upper[a]), apex);
+    }
+    const __m256 tolerance = _mm256_set1_ps(frustumTolerance(bvh, camera.origin));
+    __m256 outside = _mm256_setzero_ps();
+    for (int j = 0; j < 4; ++j) {
+        __m256 farthest[3];
+        for (int a = 0; a < 3; ++a) {
+            const __m256 n = _mm256_broadcast_ss(&normal[a][j]);
+            farthest[a] = _mm256_max_ps(_mm256_mul_ps(lower[a], n), _mm256_mul_ps(upper[a], n));
+        }
+        const __m256 distance = _mm256_add_ps(
+            _mm256_add_ps(_mm256_add_ps(farthest[0], farthest[1]), farthest[2]), tolerance);
+        outside = _mm256_or_ps(outside, _mm256_cmp_ps(distance, _mm256_setzero_ps(), _CMP_LT_OQ));
+    }
+    const unsigned inside = ~static_cast<unsigned>(_mm256_movemask_ps(outside)) & 0xffu;
+    for (unsigned m = inside; m != 0; m &= m - 1) {
         if (root.child[__builtin_ctz(m)] != kWideEmpty) {
             return false;
         }
@@ -300,6 +391,11 @@ RAYLAB_AVX2 bool missesRoot(const Bvh& bvh, const RayFrustum& frustum) {
 }
 
 } // namespace
+
+bool frustumOfImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
+                        RayFrustum& frustum) {
+    return canFrameImageRect(bvh, camera, rect) && frameImageRect(bvh, camera, rect, frustum);
+}
 
 bool frustumOfRays(const Bvh& bvh, const RayPacket* packets, int count, RayFrustum& frustum) {
     static const bool simd = bvhSimdSupported();
@@ -329,8 +425,7 @@ bool frustumOfSegments(const Bvh& bvh, const RayPacket* packets, int count, cons
 }
 
 bool imageRectMissesScene(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect) {
-    RayFrustum frustum;
-    return frustumOfImageRect(bvh, camera, rect, frustum) && missesRoot(bvh, frustum);
+    return canFrameImageRect(bvh, camera, rect) && imageRectMissesRoot(bvh, camera, rect);
 }
 
 bool frustumCandidates(const Bvh& bvh, const RayFrustum& frustum, FrustumCandidates& candidates) {
@@ -390,6 +485,9 @@ RAYLAB_AVX2 unsigned anyHitCandidates(const Bvh& bvh, const FrustumCandidates& c
 
 namespace raylab {
 bool frustumOfRays(const Bvh&, const RayPacket*, int, RayFrustum&) { return false; }
+bool frustumOfImageRect(const Bvh&, const PrimaryRays&, const ImageRect&, RayFrustum&) {
+    return false;
+}
 bool imageRectMissesScene(const Bvh&, const PrimaryRays&, const ImageRect&) { return false; }
 bool frustumOfSegments(const Bvh&, const RayPacket*, int, const glm::vec3&, RayFrustum&) {
     return false;
