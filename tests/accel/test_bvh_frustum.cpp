@@ -367,10 +367,10 @@ TEST(BvhFrustum, ImageRectMissesSceneOnlyWhereEveryRayMisses) {
     EXPECT_GT(raysChecked, 8000);
 }
 
-// imageRectMissesScene keeps the rectangle's planes in registers; its answer is that of the
-// pyramid frustumOfImageRect makes, tested against the root's children plane by plane with each
-// box's corner farthest along the plane's normal (the reference here, in the same float
-// operations), on rectangles of every size and place, whole pixels or parts of them.
+// imageRectMissesScene answers as the pyramid frustumOfImageRect makes, tested against the root's
+// children plane by plane with each box's corner farthest along the plane's normal (the reference
+// here, in the same float operations), on rectangles of every size and place, whole pixels or
+// parts of them.
 TEST(BvhFrustum, ImageRectMissesSceneIsTheRectanglesPyramidAgainstTheRoot) {
     if (!bvhSimdSupported()) {
         GTEST_SKIP() << "no AVX2";

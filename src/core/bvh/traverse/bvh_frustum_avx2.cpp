@@ -289,20 +289,11 @@ RAYLAB_AVX2 bool collectAvx2(const Bvh& bvh, const RayFrustum& frustum, FrustumC
     return true;
 }
 
-// Whether frustumOfImageRect has a pyramid to make for `rect` before its planes are computed: the
-// CPU has AVX2, the BVH its 8-wide form, the camera's position is finite and the rectangle is
-// neither empty nor NaN.
-bool canFrameImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect) {
-    static const bool simd = bvhSimdSupported();
-    return simd && !bvh.wideNodes.empty() && isFinite(camera.origin) && rect.x0 <= rect.x1 &&
-           rect.y0 <= rect.y1;
-}
-
-// The unit inward normals of the four planes of rect's pyramid (frustumOfImageRect), plane j in
-// lane j of normal[axis]: px >= x0, px <= x1, py >= y0, py <= y1. False when a plane has no
-// finite, non-zero normal.
-RAYLAB_AVX2 inline bool imageRectNormals(const PrimaryRays& camera, const ImageRect& rect,
-                                         float (&normal)[3][4]) {
+// frustumOfImageRect's pyramid, its four planes made at once (plane j in lane j: px >= x0,
+// px <= x1, py >= y0, py <= y1): one square root and three divisions for all four normals. False
+// when a plane has no finite, non-zero normal.
+RAYLAB_AVX2 bool frameImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
+                                RayFrustum& frustum) {
     // A ray's vector w = right (px - halfWidth) + up (halfHeight - py) + forward focal, with the
     // basis orthonormal, has dot(w, focal right - (x0 - halfWidth) forward) = focal (px - x0),
     // which is >= 0 exactly when px >= x0; likewise for the other three edges. Plane j's normal
@@ -329,17 +320,9 @@ RAYLAB_AVX2 inline bool imageRectNormals(const PrimaryRays& camera, const ImageR
     if (_mm_movemask_ps(ok) != 0xf) {
         return false;
     }
+    float normal[3][4];
     for (int a = 0; a < 3; ++a) {
         _mm_storeu_ps(normal[a], _mm_div_ps(inward[a], length));
-    }
-    return true;
-}
-
-RAYLAB_AVX2 bool frameImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
-                                RayFrustum& frustum) {
-    float normal[3][4];
-    if (!imageRectNormals(camera, rect, normal)) {
-        return false;
     }
     frustum.apex = camera.origin;
     frustum.planeCount = 4;
@@ -351,38 +334,12 @@ RAYLAB_AVX2 bool frameImageRect(const Bvh& bvh, const PrimaryRays& camera, const
     return true;
 }
 
-// Whether no child of the root lies (partly) inside rect's pyramid: childrenInside against the
-// planes of frustumOfImageRect, with the planes kept in registers. Axis by axis, the corner of a
-// box farthest along a normal takes the larger of the two bounds' products with it, which is the
-// product childrenInside takes (its bound chosen by the normal's sign; where the normal's
-// component is zero both are zero), so each plane keeps or drops the same children.
-RAYLAB_AVX2 bool imageRectMissesRoot(const Bvh& bvh, const PrimaryRays& camera,
-                                     const ImageRect& rect) {
-    float normal[3][4];
-    if (!imageRectNormals(camera, rect, normal)) {
-        return false;
-    }
+// Whether no child of the root lies (partly) inside the frustum.
+RAYLAB_AVX2 bool missesRoot(const Bvh& bvh, const RayFrustum& frustum) {
+    PlaneRegisters r;
+    loadPlanes(frustum, r);
     const BvhWideNode& root = bvh.wideNodes[0];
-    __m256 lower[3], upper[3]; // the children's bounds from the apex
-    for (int a = 0; a < 3; ++a) {
-        const __m256 apex = _mm256_set1_ps(camera.origin[a]);
-        lower[a] = _mm256_sub_ps(_mm256_load_ps(root.lower[a]), apex);
-        upper[a] = _mm256_sub_ps(_mm256_load_ps(root.upper[a]), apex);
-    }
-    const __m256 tolerance = _mm256_set1_ps(frustumTolerance(bvh, camera.origin));
-    __m256 outside = _mm256_setzero_ps();
-    for (int j = 0; j < 4; ++j) {
-        __m256 farthest[3];
-        for (int a = 0; a < 3; ++a) {
-            const __m256 n = _mm256_broadcast_ss(&normal[a][j]);
-            farthest[a] = _mm256_max_ps(_mm256_mul_ps(lower[a], n), _mm256_mul_ps(upper[a], n));
-        }
-        const __m256 distance = _mm256_add_ps(
-            _mm256_add_ps(_mm256_add_ps(farthest[0], farthest[1]), farthest[2]), tolerance);
-        outside = _mm256_or_ps(outside, _mm256_cmp_ps(distance, _mm256_setzero_ps(), _CMP_LT_OQ));
-    }
-    const unsigned inside = ~static_cast<unsigned>(_mm256_movemask_ps(outside)) & 0xffu;
-    for (unsigned m = inside; m != 0; m &= m - 1) {
+    for (unsigned m = childrenInside(root, r); m != 0; m &= m - 1) {
         if (root.child[__builtin_ctz(m)] != kWideEmpty) {
             return false;
         }
@@ -394,7 +351,9 @@ RAYLAB_AVX2 bool imageRectMissesRoot(const Bvh& bvh, const PrimaryRays& camera,
 
 bool frustumOfImageRect(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect,
                         RayFrustum& frustum) {
-    return canFrameImageRect(bvh, camera, rect) && frameImageRect(bvh, camera, rect, frustum);
+    static const bool simd = bvhSimdSupported();
+    return simd && !bvh.wideNodes.empty() && isFinite(camera.origin) && rect.x0 <= rect.x1 &&
+           rect.y0 <= rect.y1 && frameImageRect(bvh, camera, rect, frustum);
 }
 
 bool frustumOfRays(const Bvh& bvh, const RayPacket* packets, int count, RayFrustum& frustum) {
@@ -425,7 +384,8 @@ bool frustumOfSegments(const Bvh& bvh, const RayPacket* packets, int count, cons
 }
 
 bool imageRectMissesScene(const Bvh& bvh, const PrimaryRays& camera, const ImageRect& rect) {
-    return canFrameImageRect(bvh, camera, rect) && imageRectMissesRoot(bvh, camera, rect);
+    RayFrustum frustum;
+    return frustumOfImageRect(bvh, camera, rect, frustum) && missesRoot(bvh, frustum);
 }
 
 bool frustumCandidates(const Bvh& bvh, const RayFrustum& frustum, FrustumCandidates& candidates) {
