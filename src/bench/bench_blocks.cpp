@@ -97,7 +97,7 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
 }
 
 void traceBlockInPacketPairs(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& blocked,
-                             std::size_t block, BlockAnswers& answers, LastOccluder& last) {
+                             std::size_t block, BlockAnswers& answers, TileCarry& carry) {
     const int count = blocked.rows[block];
     const std::size_t first = block * kPacketSize;
     const RayPacket* rays = &blocked.primary[first];
@@ -116,16 +116,17 @@ void traceBlockInPacketPairs(const Bvh& bvh, const PrimaryRays& camera, const Bl
         return; // no hit, so no shadow ray
     }
     if (count == kPacketSize) {
-        closestHit64(bvh, rays, hits);
+        closestHit64(bvh, rays, hits, carry.cameraWalks);
     } else {
         for (int k = 0; k < paired; k += 2) {
             closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
         }
     }
     for (int k = 0; k < paired && shadows; k += 2) {
-        const unsigned both = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
-                                  ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1], last)
-                                  : 0u;
+        const unsigned both =
+            (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
+                ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1], carry.lastOccluder)
+                : 0u;
         occluded[k] = both & 0xffu;
         occluded[k + 1] = both >> kPacketSize;
     }

@@ -80,11 +80,12 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
 // Traces block b as shadeLabBlock does for a scene it does not trace in blocks: a full block whose
 // image rectangle misses the scene (imageRectMissesScene; its rays made by `camera`) as misses,
 // without reading its rays; else the camera rays of a block of 8 rows as one packet of 64
-// (closestHit64), of fewer rows two by two as packets of 16 (closestHit16), then every pair's
-// shadow rays (anyHit16, with `last`, which the caller carries from block to block of a tile as the
-// renderer does), a last odd row as a packet of 8. With BlockLayout::Tiles4x4, a full block is
+// (closestHit64, walked as carry.cameraWalks chooses), of fewer rows two by two as packets of 16
+// (closestHit16), then every pair's shadow rays (anyHit16, with carry.lastOccluder), a last odd
+// row as a packet of 8. The caller carries `carry` from block to block of a tile as the renderer
+// does. With BlockLayout::Tiles4x4, a full block is
 // four 4 x 4 tiles, as the renderer's. Sets no flags.
 void traceBlockInPacketPairs(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& blocked,
-                             std::size_t block, BlockAnswers& answers, LastOccluder& last);
+                             std::size_t block, BlockAnswers& answers, TileCarry& carry);
 
 } // namespace raylab::bench

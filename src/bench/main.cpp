@@ -293,9 +293,9 @@ int run(int argc, char** argv) {
     const PrimaryRays camera(cl.settings.camera, cl.settings.width, cl.settings.height);
     BlockAnswers pairAnswers = makeBlockAnswers(tiled);
     const TileTracer pairTile = [&](std::size_t tile) {
-        LastOccluder last; // as the renderer's tile loop (lab_pass.cpp)
+        TileCarry carry; // as the renderer's tile loop (lab_pass.cpp)
         for (std::size_t b = tiled.blockOffset[tile]; b < tiled.blockOffset[tile + 1]; ++b) {
-            traceBlockInPacketPairs(bvh, camera, tiled, b, pairAnswers, last);
+            traceBlockInPacketPairs(bvh, camera, tiled, b, pairAnswers, carry);
         }
         traceBounces(tile);
     };

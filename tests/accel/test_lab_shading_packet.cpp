@@ -2,6 +2,7 @@
 
 #include "accel_scenes.h"
 #include "core/bvh/bvh_frustum.h"
+#include "core/bvh/bvh_packet.h"
 #include "core/camera.h"
 #include "core/cornell_box.h"
 #include "core/integrators/lab_shading.h"
@@ -255,14 +256,17 @@ TEST(LabShadingPacket, TilePixelsCoverTheBlockInFourByFourTiles) {
 }
 
 // Full blocks of a scene traced packet by packet (shadeLabBlock regroups them as 4 x 4 tiles of
-// 16 rays where the CPU has AVX-512) against shadeLab8 row by row: the same radiance bit for bit
-// in each row's lanes, and the same counts.
-void expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& settings) {
+// 16 rays) against shadeLab8 row by row: the same radiance bit for bit in each row's lanes, and
+// the same counts. Each row of blocks carries one TileCarry, as a tile of the renderer's does.
+// Returns how many blocks the camera rays took eight walks in (CameraWalks; never where the CPU
+// has AVX-512).
+int expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& settings) {
     const Bvh bvh = buildBvh(scene);
-    ASSERT_EQ(tracingFor(bvh), BlockTracing::Packets);
+    EXPECT_EQ(tracingFor(bvh), BlockTracing::Packets);
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
-    int lit = 0, shadowed = 0;
+    int lit = 0, shadowed = 0, eightWalkBlocks = 0;
     for (int y0 = 0; y0 + kPacketSize <= settings.height; y0 += kPacketSize) {
+        TileCarry carry;
         for (int x0 = 0; x0 + kPacketSize <= settings.width; x0 += kPacketSize) {
             RayPacket packets[kPacketSize];
             for (int r = 0; r < kPacketSize; ++r) {
@@ -273,17 +277,19 @@ void expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& sett
             }
             RadiancePacket block[kPacketSize], rows[kPacketSize];
             RayCounts blockCounts, rowCounts;
-            shadeLabBlock(scene, bvh, settings, packets, kPacketSize, block, blockCounts);
+            eightWalkBlocks += !bvhPacket16Supported() && carry.cameraWalks.eightWalks() ? 1 : 0;
+            shadeLabBlock(scene, bvh, settings, packets, kPacketSize, block, blockCounts,
+                          BlockTracing::ForScene, &carry);
             for (int r = 0; r < kPacketSize; ++r) {
                 shadeLab8(scene, bvh, settings, packets[r], rows[r], rowCounts);
-                ASSERT_EQ(std::memcmp(&block[r], &rows[r], sizeof(RadiancePacket)), 0)
+                EXPECT_EQ(std::memcmp(&block[r], &rows[r], sizeof(RadiancePacket)), 0)
                     << "block " << x0 << ", " << y0 << " row " << r;
                 for (int i = 0; i < kPacketSize; ++i) {
                     lit += block[r].value[0][i] > 0.0f ? 1 : 0;
                 }
             }
-            ASSERT_EQ(blockCounts.primary, rowCounts.primary);
-            ASSERT_EQ(blockCounts.shadow, rowCounts.shadow);
+            EXPECT_EQ(blockCounts.primary, rowCounts.primary);
+            EXPECT_EQ(blockCounts.shadow, rowCounts.shadow);
             shadowed += static_cast<int>(blockCounts.shadow);
         }
     }
@@ -291,6 +297,7 @@ void expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& sett
     if (settings.shadows) {
         EXPECT_GT(shadowed, settings.width * settings.height / 16);
     }
+    return eightWalkBlocks;
 }
 
 TEST(LabShadingPacket, FullBlocksInTilesEqualPackets) {
@@ -303,6 +310,23 @@ TEST(LabShadingPacket, FullBlocksInTilesEqualPackets) {
     expectFullBlocksEqualPackets(makeClosedSphere(48, 96, 0.8f, 0.01f, 5), settings);
     settings.shadows = false;
     expectFullBlocksEqualPackets(makeTriangleSoup(5000, 0.1f, 32), settings);
+}
+
+// A mesh whose triangles are a fraction of a pixel (a height field of 2 x 240^2 triangles seen
+// whole): where the CPU has AVX2 alone, most of its blocks' camera rays take eight walks
+// (CameraWalks), with the same radiance.
+TEST(LabShadingPacket, FullBlocksOfSmallTrianglesInEightWalksEqualPackets) {
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 96;
+    settings.camera.position = {0.0f, 0.0f, -2.6f};
+    settings.light.position = {0.5f, 0.5f, -1.5f};
+    const int eightWalkBlocks = expectFullBlocksEqualPackets(makeHeightField(240, 9), settings);
+    if (bvhPacket16Supported()) {
+        EXPECT_EQ(eightWalkBlocks, 0);
+    } else {
+        EXPECT_GT(eightWalkBlocks, 12 * 12 / 2);
+    }
 }
 
 } // namespace

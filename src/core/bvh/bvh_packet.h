@@ -53,6 +53,39 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
 // (tilePixel, lab_shading.h).
 void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits);
 
+// How closestHit64 traces a tile's full blocks on a CPU with AVX2 but not AVX-512: in the one
+// shared walk of eight 8-ray packets, or as eight walks of one packet each (closestHit8). The
+// shared walk pays where a block's packets go through the same nodes and leaves (Sponza, where 6
+// of the 8 share a leaf on average); where they part ways early, as where triangles are small
+// against a block (the dragon and the terrain seen whole: 2.0-2.3 a leaf), it tests children and
+// leaves packet by packet anyway and the eight walks are faster (PERFORMANCE.md, "A block's
+// camera rays in one walk or eight"). A caller keeps one for the blocks of a tile, on one BVH,
+// default-made at the tile's start. A tile starts with the shared walk, which counts the leaves
+// it enters and the packets it tests in them; from kLeavesToDecide leaves on, its blocks take
+// eight walks while fewer than kPacketsSharingALeaf packets share a leaf on average. Eight walks
+// count nothing, so a tile keeps them once chosen. The answers are the same either way; where the
+// CPU has AVX-512 the 16-ray packets' shared walk is always taken and nothing is counted.
+struct CameraWalks {
+    static constexpr uint64_t kLeavesToDecide = 32;
+    static constexpr uint64_t kPacketsSharingALeaf = 3;
+    uint64_t leaves = 0;          // leaves the tile's shared walks entered
+    uint64_t packetLeafTests = 0; // packets tested in them, 1 to 8 a leaf
+
+    bool eightWalks() const {
+        return leaves >= kLeavesToDecide && packetLeafTests < kPacketsSharingALeaf * leaves;
+    }
+};
+
+// closestHit64, walked as `walks` chooses; the shared walk adds its leaves to it.
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, CameraWalks& walks);
+
+// What a tile's blocks carry from one block to the next, on one BVH: the shadow packets' last
+// occluder and how the camera rays walk. Default-made at a tile's start.
+struct TileCarry {
+    LastOccluder lastOccluder;
+    CameraWalks cameraWalks;
+};
+
 // Bits 0-7: the lanes of low.lanes whose ray hits a triangle; bits 8-15: those of high.lanes.
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high);
 

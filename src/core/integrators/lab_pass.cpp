@@ -107,7 +107,7 @@ bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
             uint32_t rowSeeds[kPacketSize];
             float px[kPacketSize];
             float py[kPacketSize];
-            LastOccluder lastOccluder; // the tile's shadow rays' (shadeLabBlock)
+            TileCarry carry; // from block to block of the tile (shadeLabBlock)
             for (int y0 = tile.y0; y0 < tile.y1; y0 += kPacketSize) {
                 const int rows = std::min(kPacketSize, tile.y1 - y0);
                 for (int r = 0; r < rows; ++r) {
@@ -132,7 +132,7 @@ bool labPass(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                                          static_cast<float>(x0 + count) - inset,
                                          static_cast<float>(y0 + rows) - inset};
                     shadeLabBlock(scene, bvh, settings, rays, rect, packets, rows, radiance,
-                                  tileCounts, BlockTracing::ForScene, &lastOccluder);
+                                  tileCounts, BlockTracing::ForScene, &carry);
                     for (int r = 0; r < rows; ++r) {
                         const std::size_t row = film.indexOf(x0, y0 + r);
                         write(radiance[r], count, sample.how, row, film);

@@ -88,21 +88,19 @@ constexpr BlockPixel tilePixel(int packet, int lane) {
 
 // shadeLab8 for each of rays[0, count), 0 <= count <= kPacketSize, with the same results: the
 // rays of an image block (camera rays from one origin), traced as `tracing` says (frustums only
-// where the CPU has AVX2 and the BVH its 8-wide form; packets otherwise). `lastOccluder`, when
-// given, carries the shadow packets' LastOccluder (bvh_packet.h) from block to block: a caller
-// passes one for the blocks of a tile, on one BVH.
+// where the CPU has AVX2 and the BVH its 8-wide form; packets otherwise). `carry`, when given,
+// carries the shadow packets' LastOccluder and the camera rays' CameraWalks (bvh_packet.h) from
+// block to block: a caller passes one for the blocks of a tile, on one BVH.
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts,
-                   BlockTracing tracing = BlockTracing::ForScene,
-                   LastOccluder* lastOccluder = nullptr);
+                   BlockTracing tracing = BlockTracing::ForScene, TileCarry* carry = nullptr);
 
 // The same for camera rays made by camera.through8 from image points in `rect` (the block's
 // pixels): the camera rays' frustum comes from the rectangle (frustumOfImageRect), not the rays.
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
                    int count, RadiancePacket* radiance, RayCounts& counts,
-                   BlockTracing tracing = BlockTracing::ForScene,
-                   LastOccluder* lastOccluder = nullptr);
+                   BlockTracing tracing = BlockTracing::ForScene, TileCarry* carry = nullptr);
 
 // The same for Ray records: radiance[i] for rays[0, count), 0 <= count <= kPacketSize.
 void shadeLab8(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const Ray* rays,

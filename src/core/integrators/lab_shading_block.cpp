@@ -34,13 +34,14 @@ std::array<Packet, sizeof...(I)> unsetPackets(std::index_sequence<I...>) {
 // 16-ray packets in this order too (traceBlockInPacketPairs); there, with Embree in the process,
 // each pair's shadow rays straight after its camera rays traced Sponza's 16-ray packets 0.90-0.91x
 // as fast, where without Embree in the process, and in the renderer's passes, the two orders run as
-// fast (why is not known). The shadow rays test `last` first and leave their last occluder in it
-// (LastOccluder). `background`: every camera ray is known to miss (imageRectMissesScene), so none
-// is traced. 1 <= pairs <= kPacketSize / 2. Call only where bvhSimdSupported() and
-// bvh.wideNodes is not empty.
+// fast (why is not known). The shadow rays test carry.lastOccluder first and leave their last
+// occluder in it (LastOccluder); 64 camera rays walk as carry.cameraWalks chooses. `background`:
+// every camera ray is known to miss (imageRectMissesScene), so none is traced.
+// 1 <= pairs <= kPacketSize / 2. Call only where bvhSimdSupported() and bvh.wideNodes is not
+// empty.
 void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int pairs, RadiancePacket* radiance, RayCounts& counts,
-                   LastOccluder& last, bool background = false) {
+                   TileCarry& carry, bool background = false) {
     auto hits = unsetPackets<HitPacket>(std::make_index_sequence<kPacketSize>());
     ShadingBeforeShadow stages[kPacketSize];
     auto shadowRays = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
@@ -50,7 +51,7 @@ void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& set
             hits[k].clear();
         }
     } else if (count == kPacketSize) {
-        closestHit64(bvh, rays, hits.data());
+        closestHit64(bvh, rays, hits.data(), carry.cameraWalks);
     } else {
         for (int k = 0; k < count; k += 2) {
             closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1]);
@@ -61,9 +62,10 @@ void shadeRowPairs(const Scene& scene, const Bvh& bvh, const RenderSettings& set
         beginShade(scene, settings, rays[k], hits[k], stages[k], shadowRays[k], counts);
     }
     for (int k = 0; k < count; k += 2) {
-        const unsigned occluded = (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
-                                      ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1], last)
-                                      : 0u;
+        const unsigned occluded =
+            (shadowRays[k].lanes | shadowRays[k + 1].lanes) != 0
+                ? anyHit16(bvh, shadowRays[k], shadowRays[k + 1], carry.lastOccluder)
+                : 0u;
         finishShade(stages[k], occluded & 0xffu, radiance[k]);
         finishShade(stages[k + 1], occluded >> kPacketSize, radiance[k + 1]);
     }
@@ -98,13 +100,13 @@ RAYLAB_AVX2 void gatherTile(const RayPacket* rows, int p, RayPacket& tile) {
 // tests. radiance[r] is row r's, as for the rows; `background` as shadeRowPairs takes it.
 void shadeTiles(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const RayPacket* rows, RadiancePacket* radiance, RayCounts& counts,
-                LastOccluder& last, bool background) {
+                TileCarry& carry, bool background) {
     auto tiles = unsetPackets<RayPacket>(std::make_index_sequence<kPacketSize>());
     for (int p = 0; p < kPacketSize; ++p) {
         gatherTile(rows, p, tiles[p]);
     }
     RadiancePacket tileRadiance[kPacketSize];
-    shadeRowPairs(scene, bvh, settings, tiles.data(), kPacketSize / 2, tileRadiance, counts, last,
+    shadeRowPairs(scene, bvh, settings, tiles.data(), kPacketSize / 2, tileRadiance, counts, carry,
                   background);
     for (int p = 0; p < kPacketSize; ++p) {
         for (int half = 0; half < 2; ++half) {
@@ -121,7 +123,7 @@ void shadeTiles(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
 void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                 const PrimaryRays* camera, const ImageRect& rect, const RayPacket* rays, int count,
                 RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing,
-                LastOccluder* lastOccluder) {
+                TileCarry* carry) {
     static const bool simd = bvhSimdSupported();
     if (tracing == BlockTracing::ForScene) {
         tracing = tracingFor(bvh);
@@ -129,18 +131,18 @@ void shadeBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settin
     if (tracing == BlockTracing::Packets || !simd || bvh.wideNodes.empty()) {
         int k = 0;
         if (simd && !bvh.wideNodes.empty()) {
-            LastOccluder blockOnly;
-            LastOccluder& last = lastOccluder != nullptr ? *lastOccluder : blockOnly;
+            TileCarry blockOnly;
+            TileCarry& carried = carry != nullptr ? *carry : blockOnly;
             if (fullBlock(rays, count)) {
                 // A block that sees only the background is answered from its rectangle.
                 const bool background =
                     camera != nullptr && imageRectMissesScene(bvh, *camera, rect);
-                shadeTiles(scene, bvh, settings, rays, radiance, counts, last, background);
+                shadeTiles(scene, bvh, settings, rays, radiance, counts, carried, background);
                 return;
             }
             if (count >= 2) {
                 k = count / 2 * 2;
-                shadeRowPairs(scene, bvh, settings, rays, count / 2, radiance, counts, last);
+                shadeRowPairs(scene, bvh, settings, rays, count / 2, radiance, counts, carried);
             }
         }
         for (; k < count; ++k) {
@@ -196,17 +198,16 @@ BlockTracing tracingFor(const Bvh& bvh) {
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const RayPacket* rays, int count, RadiancePacket* radiance, RayCounts& counts,
-                   BlockTracing tracing, LastOccluder* lastOccluder) {
+                   BlockTracing tracing, TileCarry* carry) {
     shadeBlock(scene, bvh, settings, nullptr, ImageRect{}, rays, count, radiance, counts, tracing,
-               lastOccluder);
+               carry);
 }
 
 void shadeLabBlock(const Scene& scene, const Bvh& bvh, const RenderSettings& settings,
                    const PrimaryRays& camera, const ImageRect& rect, const RayPacket* rays,
                    int count, RadiancePacket* radiance, RayCounts& counts, BlockTracing tracing,
-                   LastOccluder* lastOccluder) {
-    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts, tracing,
-               lastOccluder);
+                   TileCarry* carry) {
+    shadeBlock(scene, bvh, settings, &camera, rect, rays, count, radiance, counts, tracing, carry);
 }
 
 } // namespace raylab

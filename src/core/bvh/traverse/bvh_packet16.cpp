@@ -45,15 +45,22 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
     }
 }
 
-void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path) {
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path,
+                  CameraWalks* walks) {
     if (bvh.wideNodes.empty()) {
         for (int k = 0; k < kPacketSize; k += 2) {
             closestHit16(bvh, rays[k], rays[k + 1], hits[k], hits[k + 1], path);
         }
         return;
     }
+    if (path == Packet16Path::TwoPackets8 && walks != nullptr && walks->eightWalks()) {
+        for (int k = 0; k < kPacketSize; ++k) {
+            closestHit8(bvh, rays[k], hits[k]);
+        }
+        return;
+    }
     const uint64_t single = path == Packet16Path::TwoPackets8
-                                ? closestHitEightPackets(bvh, rays, hits)
+                                ? closestHitEightPackets(bvh, rays, hits, walks)
                                 : closestHitPacket64(bvh, rays, hits);
     for (uint64_t m = single; m != 0; m &= m - 1) {
         const int i = __builtin_ctzll(m);
@@ -89,6 +96,10 @@ void closestHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high, H
 
 void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits) {
     closestHit64(bvh, rays, hits, defaultPath());
+}
+
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, CameraWalks& walks) {
+    closestHit64(bvh, rays, hits, defaultPath(), &walks);
 }
 
 unsigned anyHit16(const Bvh& bvh, const RayPacket& low, const RayPacket& high) {

@@ -36,8 +36,10 @@ unsigned anyHitPacket16(const Bvh& bvh, const RayPacket& low, const RayPacket& h
                         unsigned& occluded, LastOccluder* last = nullptr);
 
 // closestHit64 (bvh_packet.h) on `path`: the AVX-512 walk of 64 rays (closestHitPacket64), or
-// on the two 8-ray packets' path the AVX2 walk of eight 8-ray packets (closestHitEightPackets).
-void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path);
+// on the two 8-ray packets' path the AVX2 walk of eight 8-ray packets (closestHitEightPackets),
+// or eight closestHit8 walks where `walks` chooses them (CameraWalks; only on that path).
+void closestHit64(const Bvh& bvh, const RayPacket* rays, HitPacket* hits, Packet16Path path,
+                  CameraWalks* walks = nullptr);
 
 // Traces the eight RayPackets rays[0, 8) as four 16-ray packets (rays[2w] lanes 0-7 and
 // rays[2w + 1] lanes 8-15 of packet w, as closestHitPacket16's low and high) in one walk of the

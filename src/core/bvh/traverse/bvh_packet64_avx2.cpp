@@ -53,6 +53,8 @@ struct EightPackets {
     Frustum frustum;                 // of every packet's lanes
     float limitMax = -kInfinity;     // the largest limit of all lanes (with a valid frustum)
     uint64_t lanes = 0;
+    uint32_t leaves = 0;          // leaves entered (CameraWalks)
+    uint32_t packetLeafTests = 0; // packets tested in them
 };
 
 // The frustum of the packets' lanes (joinFrustums of each packet's, makeFrustum8).
@@ -132,9 +134,11 @@ RAYLAB_AVX2 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, co
 // Tests the triangles of leaf `ref` against the lanes of `active`, packet by packet, each as the
 // 8-ray traversal does (testLeaf), and keeps the lanes' closest hits in p.best.
 RAYLAB_AVX2 inline void testLeaf64(const Bvh& bvh, uint32_t ref, uint64_t active, EightPackets& p) {
+    ++p.leaves;
     for (int k = 0; k < kPackets; ++k) {
         unsigned lanes = packetLanes(active, k);
         if (lanes != 0) {
+            ++p.packetLeafTests;
             unsigned found = 0; // any hit only
             testLeaf(bvh, ref, p.packet[k], p.cull[k], p.rays[k], &p.best[k], lanes, found,
                      nullptr);
@@ -191,8 +195,8 @@ RAYLAB_AVX2 void walk64(const Bvh& bvh, EightPackets& p, HitPacket* hits) {
 
 } // namespace
 
-RAYLAB_AVX2 uint64_t closestHitEightPackets(const Bvh& bvh, const RayPacket* rays,
-                                            HitPacket* hits) {
+RAYLAB_AVX2 uint64_t closestHitEightPackets(const Bvh& bvh, const RayPacket* rays, HitPacket* hits,
+                                            CameraWalks* walks) {
     EightPackets p;
     p.rays = rays;
     uint64_t single = 0;
@@ -216,6 +220,10 @@ RAYLAB_AVX2 uint64_t closestHitEightPackets(const Bvh& bvh, const RayPacket* ray
     p.frustum = joinFrustums(p);
     updateLimits(0, p);
     walk64(bvh, p, hits);
+    if (walks != nullptr) {
+        walks->leaves += p.leaves;
+        walks->packetLeafTests += p.packetLeafTests;
+    }
     return single;
 }
 
@@ -224,7 +232,9 @@ RAYLAB_AVX2 uint64_t closestHitEightPackets(const Bvh& bvh, const RayPacket* ray
 #else // not x86: buildBvh never builds the wide form, so this is never called.
 
 namespace raylab {
-uint64_t closestHitEightPackets(const Bvh&, const RayPacket*, HitPacket*) { return 0; }
+uint64_t closestHitEightPackets(const Bvh&, const RayPacket*, HitPacket*, CameraWalks*) {
+    return 0;
+}
 } // namespace raylab
 
 #endif

@@ -20,7 +20,9 @@ unsigned anyHitPacket(const Bvh& bvh, const RayPacket& rays, unsigned& occluded,
 
 // closestHitPacket of each of the eight RayPackets rays[0, 8) in one walk of the BVH (the camera
 // rays of an 8 x 8 block): every lane of hits[0, 8) is written; returns the lanes left for the
-// single-ray path (bit 8 k + i: lane i of rays[k]).
-uint64_t closestHitEightPackets(const Bvh& bvh, const RayPacket* rays, HitPacket* hits);
+// single-ray path (bit 8 k + i: lane i of rays[k]). With `walks`, adds to it the leaves the walk
+// entered and the packets it tested in them (CameraWalks).
+uint64_t closestHitEightPackets(const Bvh& bvh, const RayPacket* rays, HitPacket* hits,
+                                CameraWalks* walks = nullptr);
 
 } // namespace raylab
