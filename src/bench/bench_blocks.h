@@ -83,8 +83,8 @@ void traceBlock(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& bl
 // (closestHit64, walked as carry.cameraWalks chooses), of fewer rows two by two as packets of 16
 // (closestHit16), then every pair's shadow rays (anyHit16, with carry.lastOccluder), a last odd
 // row as a packet of 8. The caller carries `carry` from block to block of a tile as the renderer
-// does. With BlockLayout::Tiles4x4, a full block is
-// four 4 x 4 tiles, as the renderer's. Sets no flags.
+// does. With BlockLayout::Tiles4x4, a full block is four 4 x 4 tiles, as the renderer's. Sets no
+// flags.
 void traceBlockInPacketPairs(const Bvh& bvh, const PrimaryRays& camera, const BlockedRays& blocked,
                              std::size_t block, BlockAnswers& answers, TileCarry& carry);
 

@@ -100,8 +100,8 @@ TileWalks traceTile(const Bvh& bvh, const Camera& camera, int width, int height,
     return tile;
 }
 
-// A height field of 2 x 240^2 triangles seen whole from above: a triangle is about a fifth of a
-// pixel wide, so a block's packets part ways near the root.
+// A height field of 2 x 240^2 triangles seen whole from above: a quad of two triangles is about
+// 0.4 pixels wide at 128 x 128, so a block's packets part ways near the root.
 Camera heightFieldFromAbove() {
     Camera camera;
     camera.position = {0.0f, 0.0f, -2.6f};
