@@ -258,13 +258,14 @@ TEST(LabShadingPacket, TilePixelsCoverTheBlockInFourByFourTiles) {
 // Full blocks of a scene traced packet by packet (shadeLabBlock regroups them as 4 x 4 tiles of
 // 16 rays) against shadeLab8 row by row: the same radiance bit for bit in each row's lanes, and
 // the same counts. Each row of blocks carries one TileCarry, as a tile of the renderer's does.
-// Returns how many blocks the camera rays took eight walks in (CameraWalks; never where the CPU
-// has AVX-512).
-int expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& settings) {
+// Adds to `eightWalkBlocks`, when given, the blocks whose camera rays took eight walks
+// (CameraWalks; never where the CPU has AVX-512).
+void expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& settings,
+                                  int* eightWalkBlocks = nullptr) {
     const Bvh bvh = buildBvh(scene);
-    EXPECT_EQ(tracingFor(bvh), BlockTracing::Packets);
+    ASSERT_EQ(tracingFor(bvh), BlockTracing::Packets);
     const PrimaryRays primary(settings.camera, settings.width, settings.height);
-    int lit = 0, shadowed = 0, eightWalkBlocks = 0;
+    int lit = 0, shadowed = 0;
     for (int y0 = 0; y0 + kPacketSize <= settings.height; y0 += kPacketSize) {
         TileCarry carry;
         for (int x0 = 0; x0 + kPacketSize <= settings.width; x0 += kPacketSize) {
@@ -277,19 +278,22 @@ int expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& setti
             }
             RadiancePacket block[kPacketSize], rows[kPacketSize];
             RayCounts blockCounts, rowCounts;
-            eightWalkBlocks += !bvhPacket16Supported() && carry.cameraWalks.eightWalks() ? 1 : 0;
+            if (eightWalkBlocks != nullptr && !bvhPacket16Supported() &&
+                carry.cameraWalks.eightWalks()) {
+                ++*eightWalkBlocks;
+            }
             shadeLabBlock(scene, bvh, settings, packets, kPacketSize, block, blockCounts,
                           BlockTracing::ForScene, &carry);
             for (int r = 0; r < kPacketSize; ++r) {
                 shadeLab8(scene, bvh, settings, packets[r], rows[r], rowCounts);
-                EXPECT_EQ(std::memcmp(&block[r], &rows[r], sizeof(RadiancePacket)), 0)
+                ASSERT_EQ(std::memcmp(&block[r], &rows[r], sizeof(RadiancePacket)), 0)
                     << "block " << x0 << ", " << y0 << " row " << r;
                 for (int i = 0; i < kPacketSize; ++i) {
                     lit += block[r].value[0][i] > 0.0f ? 1 : 0;
                 }
             }
-            EXPECT_EQ(blockCounts.primary, rowCounts.primary);
-            EXPECT_EQ(blockCounts.shadow, rowCounts.shadow);
+            ASSERT_EQ(blockCounts.primary, rowCounts.primary);
+            ASSERT_EQ(blockCounts.shadow, rowCounts.shadow);
             shadowed += static_cast<int>(blockCounts.shadow);
         }
     }
@@ -297,7 +301,6 @@ int expectFullBlocksEqualPackets(const Scene& scene, const RenderSettings& setti
     if (settings.shadows) {
         EXPECT_GT(shadowed, settings.width * settings.height / 16);
     }
-    return eightWalkBlocks;
 }
 
 TEST(LabShadingPacket, FullBlocksInTilesEqualPackets) {
@@ -321,7 +324,8 @@ TEST(LabShadingPacket, FullBlocksOfSmallTrianglesInEightWalksEqualPackets) {
     settings.height = 96;
     settings.camera.position = {0.0f, 0.0f, -2.6f};
     settings.light.position = {0.5f, 0.5f, -1.5f};
-    const int eightWalkBlocks = expectFullBlocksEqualPackets(makeHeightField(240, 9), settings);
+    int eightWalkBlocks = 0;
+    expectFullBlocksEqualPackets(makeHeightField(240, 9), settings, &eightWalkBlocks);
     if (bvhPacket16Supported()) {
         EXPECT_EQ(eightWalkBlocks, 0);
     } else {
