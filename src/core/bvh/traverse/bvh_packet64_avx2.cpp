@@ -131,17 +131,32 @@ RAYLAB_AVX2 inline int hitChildren64(const Bvh& bvh, const BvhWideNode& node, co
     return n;
 }
 
-// Tests the triangles of leaf `ref` against the lanes of `active`, packet by packet, each as the
-// 8-ray traversal does (testLeaf), and keeps the lanes' closest hits in p.best.
+// Tests the triangles of leaf `ref` against the lanes of `active`, each packet as the 8-ray
+// traversal tests it (testBlock, with its own frustum), and keeps the lanes' closest hits in
+// p.best. Block by block, so that a block's triangle boxes are made once for all the packets that
+// test it (six a leaf on Sponza): each packet still tests the leaf's blocks in their order, so its
+// answers are testLeaf's (PERFORMANCE.md, "A leaf's triangle boxes made once for its packets").
 RAYLAB_AVX2 inline void testLeaf64(const Bvh& bvh, uint32_t ref, uint64_t active, EightPackets& p) {
     ++p.leaves;
+    bool frustumTests = false; // some packet tests triangle boxes against its frustum
     for (int k = 0; k < kPackets; ++k) {
-        unsigned lanes = packetLanes(active, k);
-        if (lanes != 0) {
-            ++p.packetLeafTests;
-            unsigned found = 0; // any hit only
-            testLeaf(bvh, ref, p.packet[k], p.cull[k], p.rays[k], &p.best[k], lanes, found,
-                     nullptr);
+        const unsigned lanes = packetLanes(active, k);
+        p.packetLeafTests += lanes != 0 ? 1 : 0;
+        frustumTests |= (lanes & (lanes - 1)) != 0 && p.cull[k].frustum.valid;
+    }
+    const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
+    for (uint32_t b = blockCount(ref); b > 0; --b, ++block) {
+        TriangleBounds bounds;
+        if (frustumTests) {
+            bounds = triangleBounds(*block, bvh.boxPad);
+        }
+        for (int k = 0; k < kPackets; ++k) {
+            unsigned lanes = packetLanes(active, k);
+            if (lanes != 0) {
+                unsigned found = 0; // any hit only
+                testBlock(bvh, block, frustumTests ? &bounds : nullptr, p.packet[k], p.cull[k],
+                          p.rays[k], &p.best[k], lanes, found, nullptr);
+            }
         }
     }
 }

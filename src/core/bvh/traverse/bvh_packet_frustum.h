@@ -170,17 +170,23 @@ RAYLAB_AVX2 inline TriangleBounds triangleBounds(const BvhTriangleBlock& block, 
     return b;
 }
 
-// The triangles of a block that some lane may hit before `limitMax`: those whose box, widened by
-// `pad` (triangleBounds), passes frustumBoxes (a ray the watertight test finds on a triangle enters
-// that box, as it enters every node box holding the triangle); all 8 without a valid frustum.
-RAYLAB_AVX2 inline unsigned frustumTriangles(const BvhTriangleBlock& block, float pad,
-                                             const Frustum& f, float limitMax) {
+// The triangles of a block that some lane may hit before `limitMax`, given the block's widened
+// triangle boxes `b` (triangleBounds): those whose box passes frustumBoxes (a ray the watertight
+// test finds on a triangle enters that box, as it enters every node box holding the triangle);
+// all 8 without a valid frustum.
+RAYLAB_AVX2 inline unsigned frustumTriangles(const TriangleBounds& b, const Frustum& f,
+                                             float limitMax) {
     if (!f.valid) {
         return 0xffu;
     }
-    const TriangleBounds b = triangleBounds(block, pad);
     __m256 tNear;
     return frustumBoxes(&b.bounds[0][0][0], f, limitMax, tNear);
+}
+
+// The same, the boxes made from `block` widened by `pad`.
+RAYLAB_AVX2 inline unsigned frustumTriangles(const BvhTriangleBlock& block, float pad,
+                                             const Frustum& f, float limitMax) {
+    return f.valid ? frustumTriangles(triangleBounds(block, pad), f, limitMax) : 0xffu;
 }
 
 // The children one lane's ray enters before `limit` (bvh_traverse_avx2.cpp's hitChildren for

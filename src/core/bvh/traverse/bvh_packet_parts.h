@@ -111,53 +111,66 @@ RAYLAB_AVX2 inline void keepBlockLane(PacketBest& best, const BvhTriangleBlock& 
     }
 }
 
-// The leaf's blocks against the lanes of `active`. Closest hit (best set): keeps the lanes'
+// One block of a leaf against the lanes of `active`. Closest hit (best set): keeps the lanes'
 // closest hits in best. Any hit: adds the lanes that hit to `found`, drops them from `active`,
-// leaves a triangle that one hit in `last` (when given), and stops when none is left. Per block,
-// whichever takes fewer tests of 8 lanes:
+// leaves a triangle that one hit in `last` (when given), and stops when none is left. Whichever
+// takes fewer tests of 8 lanes:
 // - each triangle some lane may hit before the lanes' largest limit (frustumTriangles) against
 //   the lanes;
 // - or, when fewer lanes are active than that, each active lane's ray against the whole block
-//   (the single-ray traversal's leaf test). A lone lane takes it without the frustum test, which
+//   (the single-ray traversal's test). A lone lane takes it without the frustum test, which
 //   costs about as much as the block's.
+// `bounds`, when given, are the block's triangle boxes (triangleBounds), made once for all the
+// packets that test the block; else they are made here when needed.
+RAYLAB_AVX2 inline void testBlock(const Bvh& bvh, const BvhTriangleBlock* block,
+                                  const TriangleBounds* bounds, const PacketRays& p,
+                                  const PacketCulling& cull, const RayPacket& rays,
+                                  PacketBest* best, unsigned& active, unsigned& found,
+                                  LastOccluder* last) {
+    const int lanes = __builtin_popcount(active);
+    unsigned triangles = distinctTriangles(*block);
+    if (lanes != 1) {
+        triangles &= bounds != nullptr
+                         ? frustumTriangles(*bounds, cull.frustum, cull.limitMax)
+                         : frustumTriangles(*block, bvh.boxPad, cull.frustum, cull.limitMax);
+    }
+    if (lanes < __builtin_popcount(triangles)) {
+        for (unsigned m = active; m != 0; m &= m - 1) {
+            const int l = __builtin_ctz(m);
+            if (best != nullptr) {
+                keepBlockLane(*best, *block, p, rays, l);
+            } else if (const int slot = blockHitSlot(
+                           *block, intersectBlock(*block, laneBlockRay(p, l)), rays.ray(l));
+                       slot >= 0) {
+                found |= 1u << l;
+                active &= ~(1u << l);
+                remember(bvh, block, slot, last);
+            }
+        }
+        return;
+    }
+    for (unsigned m = triangles; m != 0 && active != 0; m &= m - 1) {
+        const int tri = __builtin_ctz(m);
+        if (best != nullptr) {
+            keepTriangle(*best, *block, tri, p, rays, active);
+        } else {
+            const unsigned hit = hitLanes(*block, tri, p, rays, active);
+            if (hit != 0) {
+                found |= hit;
+                active &= ~hit;
+                remember(bvh, block, tri, last);
+            }
+        }
+    }
+}
+
+// The leaf's blocks against the lanes of `active`, block by block (testBlock).
 RAYLAB_AVX2 inline void testLeaf(const Bvh& bvh, uint32_t ref, const PacketRays& p,
                                  const PacketCulling& cull, const RayPacket& rays, PacketBest* best,
                                  unsigned& active, unsigned& found, LastOccluder* last) {
     const BvhTriangleBlock* block = &bvh.triangleBlocks[firstBlock(ref)];
     for (uint32_t b = blockCount(ref); b > 0 && active != 0; --b, ++block) {
-        const int lanes = __builtin_popcount(active);
-        const unsigned triangles =
-            distinctTriangles(*block) &
-            (lanes == 1 ? 0xffu
-                        : frustumTriangles(*block, bvh.boxPad, cull.frustum, cull.limitMax));
-        if (lanes < __builtin_popcount(triangles)) {
-            for (unsigned m = active; m != 0; m &= m - 1) {
-                const int l = __builtin_ctz(m);
-                if (best != nullptr) {
-                    keepBlockLane(*best, *block, p, rays, l);
-                } else if (const int slot = blockHitSlot(
-                               *block, intersectBlock(*block, laneBlockRay(p, l)), rays.ray(l));
-                           slot >= 0) {
-                    found |= 1u << l;
-                    active &= ~(1u << l);
-                    remember(bvh, block, slot, last);
-                }
-            }
-            continue;
-        }
-        for (unsigned m = triangles; m != 0 && active != 0; m &= m - 1) {
-            const int tri = __builtin_ctz(m);
-            if (best != nullptr) {
-                keepTriangle(*best, *block, tri, p, rays, active);
-            } else {
-                const unsigned hit = hitLanes(*block, tri, p, rays, active);
-                if (hit != 0) {
-                    found |= hit;
-                    active &= ~hit;
-                    remember(bvh, block, tri, last);
-                }
-            }
-        }
+        testBlock(bvh, block, nullptr, p, cull, rays, best, active, found, last);
     }
 }
 
