@@ -9,7 +9,8 @@
 // - the other candidates are tested against each packet with active lanes (hitChild); the child
 //   is taken with the lanes that enter it and the least of their entry distances;
 // - in a leaf each packet with active lanes is tested as the 8-ray traversal tests it
-//   (testLeaf), with its own, narrower frustum;
+//   (testBlock), with its own, narrower frustum, block by block, each block's triangle boxes made
+//   once for all the packets;
 // - a pending child is visited again only for the lanes whose closest hit so far lies beyond its
 //   entry distance.
 // Each culling test keeps a superset of the lanes' own slab tests, and every triangle test is the
